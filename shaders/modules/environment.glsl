@@ -1,0 +1,24 @@
+// Radiance of rays that escape the scene. ENVIRONMENT_KIND is fixed by the host for the
+// scene; the general shader reads the kind from a uniform instead.
+
+const int ENVIRONMENT_NONE = 0;
+const int ENVIRONMENT_SKY = 1;
+const int ENVIRONMENT_CONSTANT = 2;
+
+uniform int uEnvironmentKind;
+uniform vec3 uEnvironmentColor;
+
+vec3 environmentRadiance(vec3 direction)
+{
+#if ENVIRONMENT_KIND == ENVIRONMENT_KIND_FROM_UNIFORM
+    int kind = uEnvironmentKind;
+#else
+    const int kind = ENVIRONMENT_KIND;
+#endif
+    if (kind == ENVIRONMENT_SKY)
+        // The seed's sky: a gradient in the world's up direction (y), whatever the camera.
+        return 0.5 * vec3(0.7, 0.8, 1.0) * (1.0 - 0.5 * direction.y);
+    if (kind == ENVIRONMENT_CONSTANT)
+        return uEnvironmentColor;
+    return vec3(0.0);
+}

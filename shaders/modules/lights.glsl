@@ -1,0 +1,108 @@
+// Lights: point lights and spherical area lights (emissive spheres), sampled for next-event
+// estimation. One light is chosen per shading point with probability proportional to its
+// power (the host computes the table once, not every pixel).
+
+uniform int uUseMis;  // 1: combine light and BSDF sampling of sphere lights by MIS
+
+vec3 lightPosition(int light) { return uLights[3 * light].xyz; }
+float lightRadius(int light) { return uLights[3 * light].w; }
+vec3 lightEmission(int light) { return uLights[3 * light + 1].rgb; }
+float lightSelectionProbability(int light) { return uLights[3 * light + 1].w; }
+bool isPointLight(int light) { return uLights[3 * light + 2].y < 0.0; }
+
+int selectLight(float u)
+{
+    for (int light = 0; light < LIGHT_COUNT - 1; ++light)
+        if (u < uLights[3 * light + 2].x)
+            return light;
+    return LIGHT_COUNT - 1;
+}
+
+// The cone a sphere subtends from p, as 1 - cos(thetaMax) computed as sin^2 / (1 + cos)
+// without cancellation, so a sphere of radius 1e-4 at distance 100 keeps its solid angle.
+// False when p is inside the sphere (it has no cone then).
+bool sphereLightCone(vec3 p, int light, out float oneMinusCosThetaMax)
+{
+    vec3 toCenter = lightPosition(light) - p;
+    float radius = lightRadius(light);
+    float sin2ThetaMax = radius * radius / dot(toCenter, toCenter);
+    oneMinusCosThetaMax = sin2ThetaMax / (1.0 + sqrt(max(0.0, 1.0 - sin2ThetaMax)));
+    return sin2ThetaMax < 1.0 && oneMinusCosThetaMax > 0.0;
+}
+
+// Solid-angle density with which light sampling picks direction `direction` (known to hit
+// the sphere) from p, selection included: what MIS weighs a BSDF-sampled hit against.
+float sphereLightPdf(int light, vec3 p)
+{
+    float oneMinusCosThetaMax;
+    if (!sphereLightCone(p, light, oneMinusCosThetaMax))
+        return 0.0;
+    return lightSelectionProbability(light) * uniformConePdf(oneMinusCosThetaMax);
+}
+
+// Distance from p along unit `direction` to the near side of the light's sphere, in the form
+// c / (b + sqrt(b^2 - c)) that keeps its digits for a far, tiny sphere.
+float distanceToSphereLight(vec3 p, vec3 direction, int light)
+{
+    vec3 toCenter = lightPosition(light) - p;
+    float radius = lightRadius(light);
+    float b = dot(direction, toCenter);
+    float c = dot(toCenter, toCenter) - radius * radius;
+    float discriminant = max(b * b - c, 0.0);
+    return c / (b + sqrt(discriminant));
+}
+
+// Next-event estimation at a non-delta surface: radiance arriving from one chosen light
+// through `wo`'s side, times the BSDF and cosine, divided by the sampling densities.
+// `insideSign` is the side of the solid the incoming ray travelled in.
+vec3 directLighting(Surface s, vec3 wo, float tolerance, float insideSign)
+{
+#if LIGHT_COUNT == 0
+    return vec3(0.0);
+#else
+    int light = selectLight(random01());
+    float selection = lightSelectionProbability(light);
+    if (!(selection > 0.0))
+        return vec3(0.0);
+    vec3 origin = s.position + s.facingNormal * (2.0 * tolerance);
+
+#if HAS_POINT_LIGHTS
+    if (isPointLight(light)) {
+        vec3 toLight = lightPosition(light) - origin;
+        float distance = length(toLight);
+        vec3 wi = toLight / distance;
+        float cosI = dot(s.facingNormal, wi);
+        if (cosI <= 0.0 || distance <= tolerance)
+            return vec3(0.0);
+        vec3 f = bsdfEvaluate(s, wo, wi);
+        if (maxComponent(f) <= 0.0 ||
+            !unoccluded(origin, wi, distance - tolerance, insideSign, tolerance))
+            return vec3(0.0);
+        return f * cosI * lightEmission(light) / (distance * distance * selection);
+    }
+#endif
+
+#if HAS_SPHERE_LIGHTS
+    float oneMinusCosThetaMax;
+    if (!sphereLightCone(origin, light, oneMinusCosThetaMax))
+        return vec3(0.0);
+    vec3 axis = normalize(lightPosition(light) - origin);
+    vec3 wi = basisAround(axis) * sampleUniformCone(random2(), oneMinusCosThetaMax);
+    float cosI = dot(s.facingNormal, wi);
+    if (cosI <= 0.0)
+        return vec3(0.0);
+    vec3 f = bsdfEvaluate(s, wo, wi);
+    if (maxComponent(f) <= 0.0)
+        return vec3(0.0);
+    float distance = distanceToSphereLight(origin, wi, light);
+    // Stop short of the light's own surface, which is part of the scene it is traced in.
+    if (!unoccluded(origin, wi, distance - 2.0 * tolerance, insideSign, tolerance))
+        return vec3(0.0);
+    float lightPdf = selection * uniformConePdf(oneMinusCosThetaMax);
+    float weight = uUseMis != 0 ? powerHeuristic(lightPdf, bsdfPdf(s, wo, wi)) : 1.0;
+    return f * cosI * lightEmission(light) * (weight / lightPdf);
+#else
+    return vec3(0.0);
+#endif
+#endif
+}

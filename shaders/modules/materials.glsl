@@ -1,0 +1,208 @@
+// Materials (the scene format's finishes) as BSDFs. Directions point away from the surface:
+// `wo` towards where the path came from, `wi` towards where it goes next. Evaluations exclude
+// the cosine; sample weights are f * cos / pdf.
+
+struct Surface {
+    vec3 position;
+    vec3 normal;         // outward normal of the object
+    vec3 facingNormal;   // the normal turned towards wo (opaque materials shade with it)
+    vec3 color;          // the pigment at this point
+    vec3 emission;
+    int material;
+    float phongExponent;
+    float ior;
+    int lightIndex;      // this object's sphere light, or -1
+};
+
+struct BsdfSample {
+    bool valid;
+    vec3 direction;
+    vec3 weight;   // f * |cos| / pdf
+    float pdf;     // solid-angle density; meaningless for delta lobes
+    bool isDelta;  // mirror and glass: a single direction, not reachable by light sampling
+};
+
+BsdfSample invalidSample()
+{
+    return BsdfSample(false, vec3(0.0), vec3(0.0), 0.0, false);
+}
+
+bool isDeltaMaterial(int material)
+{
+    return material == MATERIAL_MIRROR || material == MATERIAL_DIELECTRIC;
+}
+
+// --- Blinn-Phong ---------------------------------------------------------------------------
+// f = F * f_lobe + (1 - F) * color / pi, with Schlick's F at the viewing angle (R0 = the
+// pigment) splitting energy between a glossy lobe and a diffuse base. The lobe is Blinn's
+// half-vector distribution normalised as in Ashikhmin and Shirley (2000):
+//   f_lobe = (n + 1) / (8 pi) * cos(theta_h)^n / ((wi.h) * max(cos_i, cos_o)).
+// Its albedo is at most 1 (f_lobe * cos_i = pdf(wi) * cos_i / max(cos_i, cos_o)), so with a
+// pigment of at most 1 the material never creates energy, whatever the exponent.
+
+#if HAS_BLINN_PHONG
+float blinnPhongSpecularProbability(vec3 fresnel)
+{
+    return clamp(averageComponent(fresnel), 0.0, 1.0);
+}
+
+vec3 blinnPhongEvaluate(Surface s, vec3 wo, vec3 wi)
+{
+    vec3 n = s.facingNormal;
+    float cosO = dot(n, wo);
+    float cosI = dot(n, wi);
+    if (cosO <= 0.0 || cosI <= 0.0)
+        return vec3(0.0);
+    vec3 fresnel = schlickFresnel(s.color, cosO);
+    vec3 h = normalize(wi + wo);
+    float hDotI = dot(h, wi);
+    float lobe = 0.0;
+    if (hDotI > 1e-7)
+        lobe = (s.phongExponent + 1.0) / (8.0 * PI) *
+               pow(clamp(dot(n, h), 0.0, 1.0), s.phongExponent) / (hDotI * max(cosI, cosO));
+    return fresnel * lobe + (1.0 - fresnel) * s.color * INV_PI;
+}
+
+float blinnPhongPdf(Surface s, vec3 wo, vec3 wi)
+{
+    vec3 n = s.facingNormal;
+    float cosO = dot(n, wo);
+    float cosI = dot(n, wi);
+    if (cosO <= 0.0 || cosI <= 0.0)
+        return 0.0;
+    float specular = blinnPhongSpecularProbability(schlickFresnel(s.color, cosO));
+    vec3 h = normalize(wi + wo);
+    float hDotI = dot(h, wi);
+    float lobePdf = hDotI > 1e-7
+                        ? blinnPhongHalfVectorPdf(dot(n, h), s.phongExponent) / (4.0 * hDotI)
+                        : 0.0;
+    return specular * lobePdf + (1.0 - specular) * cosineHemispherePdf(cosI);
+}
+
+// Chooses the glossy lobe with the Fresnel's probability, else the cosine-weighted diffuse
+// one; the weight uses the density of the mixture, so either choice is unbiased.
+BsdfSample blinnPhongSample(Surface s, vec3 wo)
+{
+    vec3 n = s.facingNormal;
+    float cosO = dot(n, wo);
+    if (cosO <= 0.0)
+        return invalidSample();
+    mat3 frame = basisAround(n);
+    float specular = blinnPhongSpecularProbability(schlickFresnel(s.color, cosO));
+    vec3 wi;
+    if (random01() < specular) {
+        vec3 h = frame * sampleBlinnPhongHalfVector(random2(), s.phongExponent);
+        if (dot(h, wo) <= 0.0)
+            return invalidSample();
+        wi = reflect(-wo, h);
+    } else {
+        wi = frame * sampleCosineHemisphere(random2());
+    }
+    float cosI = dot(n, wi);
+    if (cosI <= 0.0)
+        return invalidSample();
+    float pdf = blinnPhongPdf(s, wo, wi);
+    if (!(pdf > 0.0))
+        return invalidSample();
+    return BsdfSample(true, wi, blinnPhongEvaluate(s, wo, wi) * cosI / pdf, pdf, false);
+}
+#endif
+
+// --- Lambertian ----------------------------------------------------------------------------
+
+BsdfSample lambertianSample(Surface s, vec3 wo)
+{
+    vec3 n = s.facingNormal;
+    vec3 wi = basisAround(n) * sampleCosineHemisphere(random2());
+    float cosI = dot(n, wi);
+    if (cosI <= 0.0)
+        return invalidSample();
+    // f * cos / pdf = (color / pi) * cos / (cos / pi)
+    return BsdfSample(true, wi, s.color, cosineHemispherePdf(cosI), false);
+}
+
+// --- Mirror --------------------------------------------------------------------------------
+// Perfect reflection weighted by Schlick's Fresnel with the pigment as R0.
+
+#if HAS_MIRROR
+BsdfSample mirrorSample(Surface s, vec3 wo)
+{
+    vec3 n = s.facingNormal;
+    float cosO = dot(n, wo);
+    if (cosO <= 0.0)
+        return invalidSample();
+    return BsdfSample(true, reflect(-wo, n), schlickFresnel(s.color, cosO), 0.0, true);
+}
+#endif
+
+// --- Dielectric ----------------------------------------------------------------------------
+// A smooth interface between air and a medium of index ior, tinted by the pigment on every
+// event (as the seed does). Reflection or refraction is chosen with the Fresnel reflectance
+// as probability, so the weight is only the tint, except for the radiance scaling
+// (eta_o / eta_i)^2 on refraction (Veach 1997, section 5.2; PBRT 3e, section 16.1.3): light
+// is compressed entering a denser medium, and the factors of entering and leaving cancel on
+// a path through a solid. Total internal reflection reflects.
+
+#if HAS_DIELECTRIC
+BsdfSample dielectricSample(Surface s, vec3 wo)
+{
+    float cosO = dot(s.normal, wo);
+    bool entering = cosO > 0.0;
+    float etaOutgoingSide = entering ? 1.0 : s.ior;
+    float etaOtherSide = entering ? s.ior : 1.0;
+    vec3 n = entering ? s.normal : -s.normal;
+    float cosIncident = abs(cosO);
+
+    float cosTransmitted;
+    float reflectance = dielectricReflectance(cosIncident, etaOutgoingSide, etaOtherSide,
+                                              cosTransmitted);
+    if (random01() < reflectance)
+        return BsdfSample(true, reflect(-wo, n), s.color, 0.0, true);
+
+    float eta = etaOutgoingSide / etaOtherSide;
+    vec3 refracted = -eta * wo + (eta * cosIncident - cosTransmitted) * n;
+    return BsdfSample(true, normalize(refracted), s.color * (eta * eta), 0.0, true);
+}
+#endif
+
+// --- dispatch ------------------------------------------------------------------------------
+
+// f(wo, wi) for the non-delta materials (zero for the delta ones).
+vec3 bsdfEvaluate(Surface s, vec3 wo, vec3 wi)
+{
+#if HAS_BLINN_PHONG
+    if (s.material == MATERIAL_BLINN_PHONG)
+        return blinnPhongEvaluate(s, wo, wi);
+#endif
+    if (s.material == MATERIAL_LAMBERTIAN)
+        return dot(s.facingNormal, wi) > 0.0 ? s.color * INV_PI : vec3(0.0);
+    return vec3(0.0);
+}
+
+float bsdfPdf(Surface s, vec3 wo, vec3 wi)
+{
+#if HAS_BLINN_PHONG
+    if (s.material == MATERIAL_BLINN_PHONG)
+        return blinnPhongPdf(s, wo, wi);
+#endif
+    if (s.material == MATERIAL_LAMBERTIAN)
+        return cosineHemispherePdf(dot(s.facingNormal, wi));
+    return 0.0;
+}
+
+BsdfSample bsdfSample(Surface s, vec3 wo)
+{
+#if HAS_DIELECTRIC
+    if (s.material == MATERIAL_DIELECTRIC)
+        return dielectricSample(s, wo);
+#endif
+#if HAS_MIRROR
+    if (s.material == MATERIAL_MIRROR)
+        return mirrorSample(s, wo);
+#endif
+#if HAS_BLINN_PHONG
+    if (s.material == MATERIAL_BLINN_PHONG)
+        return blinnPhongSample(s, wo);
+#endif
+    return lambertianSample(s, wo);
+}

@@ -1,0 +1,46 @@
+// One frame of progressive rendering: each pixel reads its running estimate and random
+// state from the previous frame's targets, traces one path, and writes both anew (the two
+// target sets are ping-ponged by the host; no texture is read and written in one draw).
+//
+// The estimate is a running mean, mean += (x - mean) / n, not a running sum: a sum in
+// float32 loses the low digits of each new sample once it is large, the mean does not, so
+// 100 000 samples do not drift. The second moment (Welford 1962) gives each pixel's
+// variance for noise-aware comparisons. A sample that is NaN, infinite or negative is
+// discarded and counted instead: one bad sample never poisons a pixel.
+
+uniform sampler2D uPreviousEstimate;   // rgb: mean radiance, a: samples accumulated
+uniform sampler2D uPreviousMoments;    // rgb: sum of squared deviations, a: samples discarded
+uniform usampler2D uPreviousRandomState;
+
+layout(location = 0) out vec4 outEstimate;
+layout(location = 1) out vec4 outMoments;
+layout(location = 2) out uvec4 outRandomState;
+
+bool isValidSample(vec3 value)
+{
+    return !any(isnan(value)) && !any(isinf(value)) && all(greaterThanEqual(value, vec3(0.0)));
+}
+
+void main()
+{
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec4 estimate = texelFetch(uPreviousEstimate, pixel, 0);
+    vec4 moments = texelFetch(uPreviousMoments, pixel, 0);
+    rngState = texelFetch(uPreviousRandomState, pixel, 0);
+
+    // A uniformly random point inside the pixel: box-filtered anti-aliasing.
+    vec3 value = tracePath(vec2(pixel) + random2());
+
+    if (isValidSample(value)) {
+        float count = estimate.a + 1.0;
+        vec3 deviation = value - estimate.rgb;
+        estimate.rgb += deviation / count;
+        moments.rgb += deviation * (value - estimate.rgb);
+        estimate.a = count;
+    } else {
+        moments.a += 1.0;
+    }
+    outEstimate = estimate;
+    outMoments = moments;
+    outRandomState = rngState;
+}

@@ -1,0 +1,55 @@
+// Pigments: the colour of a surface point (albedo, or R0 for the Fresnel of glossy finishes).
+
+#if HAS_TEXTURE_PIGMENT
+uniform sampler2DArray uPigmentTextures;  // every image, resized to one size, sRGB-decoded
+uniform float uPigmentTextureSize;         // texels along the larger side of a layer
+#endif
+
+// 3D checkerboard of cubes of edge `size`: the first colour where
+// floor(x/s) + floor(y/s) + floor(z/s) is even. `inward` is a point a hair inside the
+// surface, so that a face lying exactly on a cube boundary (a floor at y = 0) takes one
+// colour instead of flickering between two with rounding.
+vec3 checkerPigment(vec3 inward, vec3 first, vec3 second, float size)
+{
+    vec3 cell = floor(inward / size);
+    float parity = mod(cell.x + cell.y + cell.z, 2.0);
+    return parity < 0.5 ? first : second;
+}
+
+#if HAS_TEXTURE_PIGMENT
+// Triplanar mapping (the seed's section 2.7): the image projected along each axis, one tile
+// every `tileSize` units, blended by the normal's components. Filtering is trilinear; the
+// mip level comes from the footprint of the path's ray cone at the point (explicit LOD: the
+// screen-space derivatives GLSL offers mean nothing for a path's later vertices).
+vec3 triplanarPigment(vec3 p, vec3 normal, float layer, float tileSize, float footprint)
+{
+    vec3 weights = abs(normal);
+    weights /= max(weights.x + weights.y + weights.z, 1e-6);
+    vec3 q = p / tileSize;
+    float lod = log2(max(footprint / tileSize * uPigmentTextureSize, 1e-6));
+    vec3 alongX = textureLod(uPigmentTextures, vec3(q.yz, layer), lod).rgb;
+    vec3 alongY = textureLod(uPigmentTextures, vec3(q.xz, layer), lod).rgb;
+    vec3 alongZ = textureLod(uPigmentTextures, vec3(q.xy, layer), lod).rgb;
+    return alongX * weights.x + alongY * weights.y + alongZ * weights.z;
+}
+#endif
+
+// The pigment's colour at surface point p with outward normal n; `footprint` is the ray
+// cone's width there and `tolerance` the hit tolerance.
+vec3 pigmentColor(int pigment, vec3 p, vec3 n, float footprint, float tolerance)
+{
+    vec4 header = uPigments[3 * pigment];
+    vec3 first = uPigments[3 * pigment + 1].rgb;
+    int kind = int(header.x);
+#if HAS_CHECKER_PIGMENT
+    if (kind == PIGMENT_CHECKER) {
+        float inset = max(1e-4 * header.y, 2.0 * tolerance);
+        return checkerPigment(p - inset * n, first, uPigments[3 * pigment + 2].rgb, header.y);
+    }
+#endif
+#if HAS_TEXTURE_PIGMENT
+    if (kind == PIGMENT_TEXTURE)
+        return triplanarPigment(p, n, header.z, header.y, footprint);
+#endif
+    return first;
+}

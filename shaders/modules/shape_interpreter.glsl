@@ -1,0 +1,146 @@
+// The general shader's scene: every object's shape is a small postfix program read from
+// uniforms and run by this interpreter, so the same code serves any structure. The
+// specialised shader replaces all of this with straight-line code generated for the scene
+// (render/SceneShaderGenerator.cpp), which is what `--no-specialize` is measured against.
+//
+// Instructions, ivec4(opcode, a, b, c):
+//   PRIMITIVE  a = primitive kind, b = first parameter, c = planes (polyhedron) or user SDF
+//   PUSH_FRAME a = first transform parameter: continue in the shape's local frame
+//   POP_FRAME  a = first transform parameter: back to the parent frame, distance rescaled
+//   COMBINE    a = CSG operator, b = operand count, c = parameter slot (smooth operators)
+//   END        the object's distance is on the stack
+
+uniform ivec4 uShapeProgram[SHAPE_PROGRAM_ARRAY_SIZE];
+
+const int OPCODE_END = 0;
+const int OPCODE_PRIMITIVE = 1;
+const int OPCODE_PUSH_FRAME = 2;
+const int OPCODE_POP_FRAME = 3;
+const int OPCODE_COMBINE = 4;
+
+const int PRIMITIVE_SPHERE = 0;
+const int PRIMITIVE_POLYHEDRON = 1;
+const int PRIMITIVE_BOX = 2;
+const int PRIMITIVE_TORUS = 3;
+const int PRIMITIVE_CONE = 4;
+const int PRIMITIVE_CYLINDER = 5;
+const int PRIMITIVE_DISK = 6;
+const int PRIMITIVE_USER = 7;
+
+const int CSG_UNION = 0;
+const int CSG_INTERSECTION = 1;
+const int CSG_DIFFERENCE = 2;
+const int CSG_SMOOTH_UNION = 3;
+const int CSG_SMOOTH_INTERSECTION = 4;
+const int CSG_SMOOTH_DIFFERENCE = 5;
+const int CSG_POLY_SMOOTH_UNION = 6;
+const int CSG_POLY_SMOOTH_INTERSECTION = 7;
+const int CSG_POLY_SMOOTH_DIFFERENCE = 8;
+
+float primitiveDistance(int kind, int first, int extra, vec3 p)
+{
+    vec4 a = uShapeParameters[first];
+    if (kind == PRIMITIVE_SPHERE)
+        return sdSphere(p - a.xyz, a.w);
+    if (kind == PRIMITIVE_POLYHEDRON) {
+        float d = FLOAT_MAX;
+        for (int plane = 0; plane < extra; ++plane)
+            d = min(d, sdHalfSpace(p, uShapeParameters[first + plane]));
+        return d;
+    }
+    vec4 b = uShapeParameters[first + 1];
+    if (kind == PRIMITIVE_BOX)
+        return sdBox(p - a.xyz, b.xyz);
+    if (kind == PRIMITIVE_TORUS)
+        return sdTorus(p - a.xyz, a.w, b.x);
+    if (kind == PRIMITIVE_CONE)
+        return sdConeBound(p - a.xyz, b.xy);
+    if (kind == PRIMITIVE_CYLINDER)
+        return sdCappedCylinder(p - a.xyz, a.w, b.x);
+    if (kind == PRIMITIVE_DISK)
+        return sdDisk(p - a.xyz, b.xyz, a.w);
+    return callUserSdf(extra, p, a.xyz) * a.w;
+}
+
+float combine(int op, float a, float b, float parameter)
+{
+    if (op == CSG_UNION)
+        return opUnion(a, b);
+    if (op == CSG_INTERSECTION)
+        return opIntersection(a, b);
+    if (op == CSG_DIFFERENCE)
+        return opDifference(a, b);
+    if (op == CSG_SMOOTH_UNION)
+        return opSmoothUnionExp(a, b, parameter);
+    if (op == CSG_SMOOTH_INTERSECTION)
+        return opSmoothIntersectionExp(a, b, parameter);
+    if (op == CSG_SMOOTH_DIFFERENCE)
+        return opSmoothDifferenceExp(a, b, parameter);
+    if (op == CSG_POLY_SMOOTH_UNION)
+        return opSmoothUnionPoly(a, b, parameter);
+    if (op == CSG_POLY_SMOOTH_INTERSECTION)
+        return opSmoothIntersectionPoly(a, b, parameter);
+    return opSmoothDifferencePoly(a, b, parameter);
+}
+
+float runShapeProgram(int start, vec3 p)
+{
+    float distances[SHAPE_STACK_DEPTH];
+    vec3 frames[SHAPE_STACK_DEPTH];
+    int distanceCount = 0;
+    int frameCount = 0;
+    vec3 point = p;
+    for (int pc = start; pc < SHAPE_PROGRAM_ARRAY_SIZE; ++pc) {
+        ivec4 instruction = uShapeProgram[pc];
+        if (instruction.x == OPCODE_END)
+            break;
+        if (instruction.x == OPCODE_PRIMITIVE) {
+            distances[distanceCount++] =
+                primitiveDistance(instruction.y, instruction.z, instruction.w, point);
+        } else if (instruction.x == OPCODE_PUSH_FRAME) {
+            frames[frameCount++] = point;
+            point = toLocalPoint(point, instruction.y);
+        } else if (instruction.x == OPCODE_POP_FRAME) {
+            point = frames[--frameCount];
+            distances[distanceCount - 1] =
+                toWorldDistance(distances[distanceCount - 1], instruction.y);
+        } else {
+            int operands = instruction.z;
+            int first = distanceCount - operands;
+            float parameter = uShapeParameters[instruction.w].x;
+            float d = distances[first];
+            for (int i = 1; i < operands; ++i)
+                d = combine(instruction.y, d, distances[first + i], parameter);
+            distanceCount = first;
+            distances[distanceCount++] = d;
+        }
+    }
+    return distances[0];
+}
+
+float objectDistance(int object, vec3 p)
+{
+    return runShapeProgram(uObjects[object].w, p);
+}
+
+float sceneDistance(vec3 p)
+{
+    float d = FLOAT_MAX;
+    for (int object = 0; object < OBJECT_COUNT; ++object)
+        d = min(d, objectDistance(object, p));
+    return d;
+}
+
+float sceneDistanceAndObject(vec3 p, out int nearest)
+{
+    float d = FLOAT_MAX;
+    nearest = -1;
+    for (int object = 0; object < OBJECT_COUNT; ++object) {
+        float candidate = objectDistance(object, p);
+        if (candidate < d) {
+            d = candidate;
+            nearest = object;
+        }
+    }
+    return d;
+}

@@ -1,0 +1,18 @@
+// Similarity transforms of shapes: world = R (s local) + T. A shape is evaluated at the
+// local point R^T (p - T) / s and its distance scaled back by s, which keeps an exact
+// distance exact and a bound a bound (the Lipschitz factor is unchanged).
+// Parameters: R's three columns in slots first..first+2, (T, s) in slot first+3.
+
+vec3 toLocalPoint(vec3 p, int first)
+{
+    vec4 translationAndScale = uShapeParameters[first + 3];
+    vec3 d = p - translationAndScale.xyz;
+    return vec3(dot(uShapeParameters[first].xyz, d), dot(uShapeParameters[first + 1].xyz, d),
+                dot(uShapeParameters[first + 2].xyz, d)) /
+           translationAndScale.w;
+}
+
+float toWorldDistance(float localDistance, int first)
+{
+    return localDistance * uShapeParameters[first + 3].w;
+}

@@ -1,0 +1,193 @@
+#include "app/CommandLine.h"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <vector>
+
+namespace app {
+
+namespace {
+
+bool parseWhole(const std::string& text, long long& value)
+{
+    const char* last = text.data() + text.size();
+    const auto [end, error] = std::from_chars(text.data(), last, value);
+    return error == std::errc() && end == last;
+}
+
+bool parseDecimal(const std::string& text, double& value)
+{
+    const char* last = text.data() + text.size();
+    const auto [end, error] = std::from_chars(text.data(), last, value);
+    return error == std::errc() && end == last && std::isfinite(value);
+}
+
+int positiveInteger(const std::string& text, const std::string& what, long long maximum)
+{
+    long long value = 0;
+    if (!parseWhole(text, value) || value < 1 || value > maximum)
+        throw UsageError(what + " must be a whole number from 1 to " + std::to_string(maximum) +
+                         ", not '" + text + "'");
+    return static_cast<int>(value);
+}
+
+int nonNegativeInteger(const std::string& text, const std::string& what, long long maximum)
+{
+    long long value = 0;
+    if (!parseWhole(text, value) || value < 0 || value > maximum)
+        throw UsageError(what + " must be a whole number from 0 to " + std::to_string(maximum) +
+                         ", not '" + text + "'");
+    return static_cast<int>(value);
+}
+
+double positiveDecimal(const std::string& text, const std::string& what)
+{
+    double value = 0.0;
+    if (!parseDecimal(text, value) || !(value > 0.0))
+        throw UsageError(what + " must be a positive number, not '" + text + "'");
+    return value;
+}
+
+// Image sides are checked against the GL's own limit once a context exists; this bound only
+// keeps the numbers sane before that.
+constexpr long long kLargestSide = 1 << 16;
+
+}  // namespace
+
+std::filesystem::path CommandLine::outputPath() const
+{
+    if (output)
+        return *output;
+    return scene.stem().string() + ".ppm";
+}
+
+CommandLine parseCommandLine(int argc, const char* const argv[])
+{
+    CommandLine line;
+    std::vector<std::string> positional;
+    for (int i = 1; i < argc; ++i) {
+        const std::string argument = argv[i];
+        auto value = [&](const std::string& option) -> std::string {
+            if (i + 1 >= argc)
+                throw UsageError(option + " needs a value");
+            return argv[++i];
+        };
+        if (argument == "--help" || argument == "-h") {
+            line.action = Action::Help;
+        } else if (argument == "--version") {
+            line.action = Action::Version;
+        } else if (argument == "--features") {
+            line.action = Action::PrintFeatures;
+        } else if (argument == "--print-shader") {
+            line.action = Action::PrintShader;
+        } else if (argument == "--spp") {
+            line.samplesPerPixel = positiveInteger(value(argument), "--spp", 1 << 24);
+        } else if (argument == "--output" || argument == "-o") {
+            line.output = value(argument);
+        } else if (argument == "--stats-output") {
+            line.statisticsOutput = value(argument);
+        } else if (argument == "--headless") {
+            line.headless = true;
+        } else if (argument == "--quiet") {
+            line.quiet = true;
+        } else if (argument == "--seed") {
+            long long seed = 0;
+            const std::string text = value(argument);
+            if (!parseWhole(text, seed) || seed < 0)
+                throw UsageError("--seed must be a whole number of 0 or more, not '" + text + "'");
+            line.settings.seed = static_cast<std::uint64_t>(seed);
+        } else if (argument == "--no-specialize") {
+            line.settings.variant = render::ShaderVariant::General;
+        } else if (argument == "--hit-tolerance") {
+            line.settings.hitTolerance =
+                static_cast<float>(positiveDecimal(value(argument), "--hit-tolerance"));
+        } else if (argument == "--max-steps") {
+            line.settings.maxMarchSteps = positiveInteger(value(argument), "--max-steps", 1 << 20);
+        } else if (argument == "--over-relaxation") {
+            const double omega = positiveDecimal(value(argument), "--over-relaxation");
+            if (omega < 1.0 || omega >= 2.0)
+                throw UsageError("--over-relaxation must be at least 1 and below 2");
+            line.settings.overRelaxation = static_cast<float>(omega);
+        } else if (argument == "--max-bounces") {
+            line.settings.maxBounces = nonNegativeInteger(value(argument), "--max-bounces", 1024);
+        } else if (argument == "--rr-depth") {
+            line.settings.russianRouletteDepth =
+                nonNegativeInteger(value(argument), "--rr-depth", 1024);
+        } else if (argument == "--no-mis") {
+            line.settings.multipleImportanceSampling = false;
+        } else if (argument == "--fresnel") {
+            const std::string model = value(argument);
+            if (model == "schlick")
+                line.settings.dielectricFresnel = render::FresnelModel::Schlick;
+            else if (model == "exact")
+                line.settings.dielectricFresnel = render::FresnelModel::Exact;
+            else
+                throw UsageError("--fresnel must be 'schlick' or 'exact', not '" + model + "'");
+        } else if (argument.size() > 1 && argument[0] == '-' &&
+                   !(std::isdigit(static_cast<unsigned char>(argument[1])) || argument[1] == '.')) {
+            throw UsageError("unknown option '" + argument + "' (see --help)");
+        } else {
+            positional.push_back(argument);
+        }
+    }
+
+    if (line.action == Action::Help || line.action == Action::Version)
+        return line;
+    if (positional.empty())
+        throw UsageError("no scene file given (see --help)");
+    line.scene = positional[0];
+    if (positional.size() == 2)
+        throw UsageError("give both WIDTH and HEIGHT, not only '" + positional[1] + "'");
+    if (positional.size() >= 3) {
+        line.width = positiveInteger(positional[1], "WIDTH", kLargestSide);
+        line.height = positiveInteger(positional[2], "HEIGHT", kLargestSide);
+    }
+    if (positional.size() >= 4)
+        line.seconds = positiveDecimal(positional[3], "SECONDS");
+    if (positional.size() > 4)
+        throw UsageError("unexpected argument '" + positional[4] + "' (see --help)");
+    return line;
+}
+
+std::string usageText()
+{
+    return R"(usage: raytracer SCENE [WIDTH HEIGHT] [SECONDS] [options]
+
+Renders SCENE (a .in scene file) by path tracing on the GPU, WIDTH x HEIGHT pixels
+(default 640 480). Without SECONDS or --spp a window shows the image converging until it
+is closed (Escape closes it). With SECONDS the render runs that long, then writes the
+tone-mapped image as SCENE-NAME.ppm in the current folder (or --output). Without a display,
+or with --headless, rendering uses OSMesa and opens no window.
+
+output:
+  --spp N               stop after exactly N samples per pixel (deterministic for a seed)
+  --output FILE         where to write: .ppm or .png hold the tone-mapped picture,
+                        .exr or .pfm the linear HDR radiance
+  --stats-output FILE   also write per-pixel statistics (.exr): samples, discarded samples,
+                        variance of the mean
+  --headless            render with OSMesa even when a display is available
+  --seed N              random seed (default 1)
+  --quiet               no progress line
+
+accuracy (see docs/ACCURACY.md for what each costs):
+  --hit-tolerance F     accept a hit within F pixel footprints (default 0.5)
+  --max-steps N         sphere-tracing step limit per ray (default 512)
+  --over-relaxation W   over-relaxation factor, 1 to < 2 (default 1.2; 1 disables it)
+  --max-bounces N       scattering events per path (default 16)
+  --rr-depth N          bounces before Russian roulette may end a path (default 4)
+  --no-mis              light sampling only for sphere lights, no multiple importance sampling
+  --fresnel MODEL       dielectric Fresnel: schlick (default) or exact
+
+shader:
+  --features            print the features SCENE uses and exit
+  --print-shader        print the fragment shader assembled for SCENE and exit
+  --no-specialize       use the general shader with every feature instead of one built
+                        for the scene
+
+  --help                this text
+  --version             the program's version
+)";
+}
+
+}  // namespace app

@@ -1,0 +1,154 @@
+#include "app/RenderCommand.h"
+
+#include "app/Interrupt.h"
+#include "app/Progress.h"
+#include "io/ImageFile.h"
+#include "platform/ContextFactory.h"
+#include "render/PathTracerProgram.h"
+#include "render/ProgressiveRenderer.h"
+#include "scene/FileLookup.h"
+#include "scene/SceneFeatures.h"
+#include "scene/SceneParser.h"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+namespace app {
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string windowTitle(const CommandLine& line, int samples, double rate)
+{
+    char text[256];
+    std::snprintf(text, sizeof text, "raytracer - %s - %d spp, %.2f spp/s",
+                  line.scene.filename().string().c_str(), samples, rate);
+    return text;
+}
+
+void writeOutputs(const CommandLine& line, const render::ProgressiveRenderer& renderer,
+                  const io::Image* windowPicture)
+{
+    const std::filesystem::path path = line.outputPath();
+    if (io::holdsLinearRadiance(path))
+        io::writeImage(path, renderer.radiance());
+    else
+        io::writeImage(path, windowPicture != nullptr ? *windowPicture : renderer.toneMapped());
+    if (line.statisticsOutput)
+        io::writeImage(*line.statisticsOutput, renderer.sampleStatistics());
+}
+
+}  // namespace
+
+int runRender(const CommandLine& line)
+{
+    const scene::Scene scene = scene::parseSceneFile(line.scene);
+    const bool writesFile = line.isBatch() || line.output.has_value();
+    if (writesFile) {
+        io::checkWritableFormat(line.outputPath());
+        if (line.statisticsOutput)
+            io::checkWritableFormat(*line.statisticsOutput);
+    }
+    const bool headless = line.headless || !platform::displayAvailable();
+    if (headless && !line.isBatch())
+        throw UsageError(std::string(line.headless ? "--headless" : "there is no display, so") +
+                         " renders need an end: give SECONDS or --spp (the image is written "
+                         "to a file)");
+
+    platform::ContextRequest request;
+    request.headless = headless;
+    request.windowWidth = line.width;
+    request.windowHeight = line.height;
+    request.windowTitle = "raytracer - " + line.scene.filename().string();
+    const auto setupStart = std::chrono::steady_clock::now();
+    auto context = platform::createContext(request);
+    render::ProgressiveRenderer renderer(scene, line.width, line.height, line.settings);
+    const double setupSeconds = secondsSince(setupStart);
+
+    InterruptWatch interrupt;
+    Progress progress(line.width, line.height, line.seconds, line.samplesPerPixel,
+                      line.isBatch() && !line.quiet);
+    const auto renderStart = std::chrono::steady_clock::now();
+    bool windowClosed = false;
+    auto timeLeft = [&] { return !line.seconds || secondsSince(renderStart) < *line.seconds; };
+    auto keepGoing = [&] {
+        if (context->hasWindow() && context->closeRequested())
+            windowClosed = true;
+        return !interrupt.requested() && !windowClosed && timeLeft();
+    };
+
+    auto lastTitle = std::chrono::steady_clock::now();
+    while (keepGoing()) {
+        if (line.samplesPerPixel && renderer.samplesPerPixel() >= *line.samplesPerPixel)
+            break;
+        if (!renderer.renderFrame(keepGoing))
+            break;
+        progress.update(renderer.samplesPerPixel());
+        if (context->hasWindow()) {
+            const platform::DrawableSize size = context->windowFramebufferSize();
+            renderer.displayToWindow(size.width, size.height);
+            context->present();
+            if (secondsSince(lastTitle) > 0.25) {
+                const double elapsed = secondsSince(renderStart);
+                context->setTitle(windowTitle(line, renderer.samplesPerPixel(),
+                                              renderer.samplesPerPixel() / elapsed));
+                lastTitle = std::chrono::steady_clock::now();
+            }
+        }
+    }
+    const double renderSeconds = secondsSince(renderStart);
+    progress.finish();
+
+    if (writesFile) {
+        io::Image windowPicture;
+        bool fromWindow = false;
+        if (context->hasWindow()) {
+            // The picture the window shows is the one written: draw it once more and read it
+            // back before it is presented.
+            const platform::DrawableSize size = context->windowFramebufferSize();
+            if (size.width == line.width && size.height == line.height) {
+                renderer.displayToWindow(size.width, size.height);
+                windowPicture = render::readWindowPixels(size.width, size.height);
+                fromWindow = true;
+            }
+        }
+        writeOutputs(line, renderer, fromWindow ? &windowPicture : nullptr);
+    }
+
+    std::string summary = Progress::summary(line.width, line.height, renderer.samplesPerPixel(),
+                                            renderSeconds, renderer.discardedSamples());
+    char setup[64];
+    std::snprintf(setup, sizeof setup, " (setup %.2f s)", setupSeconds);
+    summary += setup;
+    if (writesFile)
+        summary += " -> " + line.outputPath().string();
+    if (interrupt.requested())
+        summary += " (interrupted)";
+    std::cout << summary << std::endl;
+    return interrupt.requested() ? kExitInterrupted : kExitSuccess;
+}
+
+int printFeatures(const CommandLine& line)
+{
+    const scene::Scene scene = scene::parseSceneFile(line.scene);
+    std::cout << scene::analyseFeatures(scene).describe();
+    return kExitSuccess;
+}
+
+int printShader(const CommandLine& line)
+{
+    const scene::Scene scene = scene::parseSceneFile(line.scene);
+    const render::SceneShaderCode code =
+        render::generateSceneShaderCode(scene, line.settings.variant);
+    std::cout << render::assemblePathTracerSource(code,
+                                                  scene::FileLookup::dataDirectory() / "shaders")
+                     .text();
+    return kExitSuccess;
+}
+
+}  // namespace app

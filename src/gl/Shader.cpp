@@ -1,0 +1,106 @@
+#include "gl/Shader.h"
+
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace gl {
+
+namespace {
+
+std::string shaderLog(GLuint shader)
+{
+    GLint length = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::vector<char> log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    return log.data();
+}
+
+std::string programLog(GLuint program)
+{
+    GLint length = 0;
+    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    std::vector<char> log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetProgramInfoLog(program, length, nullptr, log.data());
+    return log.data();
+}
+
+GLuint compile(GLenum stage, const std::string& source, const std::string& label,
+               const LogExplainer& explain)
+{
+    const GLuint shader = glCreateShader(stage);
+    const char* text = source.c_str();
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint compiled = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
+    if (compiled != GL_TRUE) {
+        const std::string log = shaderLog(shader);
+        glDeleteShader(shader);
+        const char* stageName = stage == GL_VERTEX_SHADER ? "vertex" : "fragment";
+        throw std::runtime_error("the " + std::string(stageName) + " shader of " + label +
+                                 " does not compile:\n" + (explain ? explain(log) : log));
+    }
+    return shader;
+}
+
+}  // namespace
+
+Program::Program(const std::string& vertexSource, const std::string& fragmentSource,
+                 const std::string& label, const LogExplainer& explainFragmentLog)
+{
+    const GLuint vertex = compile(GL_VERTEX_SHADER, vertexSource, label, {});
+    GLuint fragment = 0;
+    try {
+        fragment = compile(GL_FRAGMENT_SHADER, fragmentSource, label, explainFragmentLog);
+    } catch (...) {
+        glDeleteShader(vertex);
+        throw;
+    }
+    id_ = glCreateProgram();
+    glAttachShader(id_, vertex);
+    glAttachShader(id_, fragment);
+    glLinkProgram(id_);
+    glDeleteShader(vertex);
+    glDeleteShader(fragment);
+    GLint linked = GL_FALSE;
+    glGetProgramiv(id_, GL_LINK_STATUS, &linked);
+    if (linked != GL_TRUE) {
+        const std::string log = programLog(id_);
+        glDeleteProgram(id_);
+        id_ = 0;
+        throw std::runtime_error("the shaders of " + label + " do not link:\n" +
+                                 (explainFragmentLog ? explainFragmentLog(log) : log));
+    }
+}
+
+Program::~Program()
+{
+    if (id_ != 0)
+        glDeleteProgram(id_);
+}
+
+Program::Program(Program&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
+
+Program& Program::operator=(Program&& other) noexcept
+{
+    if (this != &other) {
+        if (id_ != 0)
+            glDeleteProgram(id_);
+        id_ = std::exchange(other.id_, 0);
+    }
+    return *this;
+}
+
+void Program::use() const
+{
+    glUseProgram(id_);
+}
+
+GLint Program::uniformLocation(const char* name) const
+{
+    return glGetUniformLocation(id_, name);
+}
+
+}  // namespace gl

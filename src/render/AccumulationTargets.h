@@ -1,0 +1,45 @@
+#pragma once
+#include "gl/Framebuffer.h"
+#include "gl/Texture.h"
+
+#include <array>
+#include <cstdint>
+
+namespace render {
+
+// The per-pixel state that persists between frames, twice over: each frame reads one set and
+// writes the other, then they swap (reading and writing one texture in a draw is undefined).
+//   estimate      RGBA32F  rgb: running mean of the radiance, a: samples accumulated
+//   moments       RGBA32F  rgb: running sum of squared deviations (Welford), a: samples discarded
+//   randomState   RGBA32UI the pixel's xoshiro128** state
+class AccumulationTargets {
+public:
+    AccumulationTargets(int width, int height, std::uint64_t seed);
+
+    struct Set {
+        gl::Texture estimate;
+        gl::Texture moments;
+        gl::Texture randomState;
+        gl::Framebuffer framebuffer;
+    };
+
+    const Set& previous() const { return sets_[current_]; }
+    const Set& next() const { return sets_[1 - current_]; }
+    // After a frame has been drawn into next(): it becomes previous().
+    void swap() { current_ = 1 - current_; }
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+private:
+    int width_;
+    int height_;
+    std::array<Set, 2> sets_;
+    int current_ = 0;
+};
+
+// The initial random state of pixel `pixelIndex` (row-major from the bottom row) for `seed`:
+// 128 bits from SplitMix64 (Steele et al. 2014), never all zero.
+std::array<std::uint32_t, 4> initialRandomState(std::uint64_t seed, std::uint64_t pixelIndex);
+
+}  // namespace render

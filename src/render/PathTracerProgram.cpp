@@ -1,0 +1,79 @@
+#include "render/PathTracerProgram.h"
+
+#include <chrono>
+
+namespace render {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* const kVersion = "#version 330 core\n";
+
+gl::Program compileAndTime(const std::string& vertex, const ShaderSource& fragment,
+                           double& seconds)
+{
+    const auto start = std::chrono::steady_clock::now();
+    gl::Program program(vertex, fragment.text(), "the path tracer",
+                        [&fragment](const std::string& log) { return fragment.explainLog(log); });
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return program;
+}
+
+}  // namespace
+
+ShaderSource assemblePathTracerSource(const SceneShaderCode& code, const fs::path& shaderDirectory)
+{
+    const fs::path modules = shaderDirectory / "modules";
+    ShaderSource source;
+    source.add("<preamble: features of the scene>", kVersion + code.defines);
+    auto module = [&](const char* name) { source.addFile(modules / name, shaderDirectory); };
+
+    const bool specialized = code.variant == ShaderVariant::Specialized;
+    module("constants.glsl");
+    module("rng.glsl");
+    module("sampling.glsl");
+    module("sdf_primitives.glsl");
+    module("csg_operators.glsl");
+    module("scene_data.glsl");
+    if (code.features.transforms)
+        module("shape_transforms.glsl");
+    if (!code.userSdfFiles.empty()) {
+        module("user_sdf_api.glsl");
+        for (const fs::path& file : code.userSdfFiles)
+            source.addFile(file, shaderDirectory);
+    }
+    source.add(specialized ? "<generated: the scene's distance functions>"
+                           : "<generated: user SDF dispatch>",
+               code.sceneFunctions);
+    if (!specialized)
+        module("shape_interpreter.glsl");
+    module("sphere_tracing.glsl");
+    module("camera.glsl");
+    module("fresnel.glsl");
+    module("pigments.glsl");
+    module("materials.glsl");
+    module("lights.glsl");
+    module("environment.glsl");
+    module("integrator.glsl");
+    module("path_tracer_main.glsl");
+    return source;
+}
+
+std::string fullscreenVertexSource(const fs::path& shaderDirectory)
+{
+    return kVersion + readTextFile(shaderDirectory / "modules" / "fullscreen.vert");
+}
+
+PathTracerProgram::PathTracerProgram(const SceneShaderCode& code, const fs::path& shaderDirectory)
+    : PathTracerProgram(assemblePathTracerSource(code, shaderDirectory),
+                        fullscreenVertexSource(shaderDirectory))
+{
+}
+
+PathTracerProgram::PathTracerProgram(const ShaderSource& fragment, const std::string& vertex)
+    : fragmentSource_(fragment.text()), program_(compileAndTime(vertex, fragment, compileSeconds_))
+{
+}
+
+}  // namespace render

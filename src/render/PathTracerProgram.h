@@ -1,0 +1,38 @@
+#pragma once
+#include "gl/Shader.h"
+#include "render/SceneShaderGenerator.h"
+#include "render/ShaderSource.h"
+
+#include <filesystem>
+#include <string>
+
+namespace render {
+
+// Assembles the path-tracing fragment shader for a scene from the modules in
+// shaders/modules/ (only those its features need), the scene's user SDF files and the
+// generated scene code; see assemblePathTracerSource for the order.
+ShaderSource assemblePathTracerSource(const SceneShaderCode& code,
+                                      const std::filesystem::path& shaderDirectory);
+
+// The vertex shader every pass uses: one triangle over the viewport.
+std::string fullscreenVertexSource(const std::filesystem::path& shaderDirectory);
+
+// The compiled path-tracing program with the source it came from.
+class PathTracerProgram {
+public:
+    PathTracerProgram(const SceneShaderCode& code, const std::filesystem::path& shaderDirectory);
+
+    const gl::Program& program() const { return program_; }
+    const std::string& fragmentSource() const { return fragmentSource_; }
+    double compileSeconds() const { return compileSeconds_; }
+
+private:
+    PathTracerProgram(const ShaderSource& fragment, const std::string& vertex);
+
+    // Declared first: the program's initialiser measures into it.
+    double compileSeconds_ = 0.0;
+    std::string fragmentSource_;
+    gl::Program program_;
+};
+
+}  // namespace render

@@ -1,0 +1,28 @@
+#pragma once
+#include "render/SceneShaderGenerator.h"
+
+#include <cstdint>
+
+namespace render {
+
+enum class FresnelModel { Schlick, Exact };
+
+// Every setting that trades accuracy for time. All are uniforms except the shader variant:
+// changing one never recompiles. Defaults are the seed's choices where it made one.
+struct RenderSettings {
+    // A hit is accepted when the distance is below this fraction of the ray cone's width.
+    float hitTolerance = 0.5f;
+    int maxMarchSteps = 512;
+    // Keinert et al.'s omega; 1 turns over-relaxation off.
+    float overRelaxation = 1.2f;
+    // Scattering events after the camera ray (the seed: 16 path vertices).
+    int maxBounces = 16;
+    // Scattering events before Russian roulette may end a path (the seed: 4).
+    int russianRouletteDepth = 4;
+    bool multipleImportanceSampling = true;
+    FresnelModel dielectricFresnel = FresnelModel::Schlick;
+    ShaderVariant variant = ShaderVariant::Specialized;
+    std::uint64_t seed = 1;
+};
+
+}  // namespace render

@@ -1,0 +1,357 @@
+#include "render/SceneShaderGenerator.h"
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+namespace render {
+
+using namespace scene;
+
+namespace {
+
+// Codes shared with shaders/modules/shape_interpreter.glsl.
+enum Opcode { kEnd = 0, kPrimitive = 1, kPushFrame = 2, kPopFrame = 3, kCombine = 4 };
+enum PrimitiveCode {
+    kSphere = 0,
+    kPolyhedron = 1,
+    kBox = 2,
+    kTorus = 3,
+    kCone = 4,
+    kCylinder = 5,
+    kDisk = 6,
+    kUser = 7,
+};
+
+int csgCode(CsgOperator op)
+{
+    switch (op) {
+    case CsgOperator::Union: return 0;
+    case CsgOperator::Intersection: return 1;
+    case CsgOperator::Difference: return 2;
+    case CsgOperator::SmoothUnion: return 3;
+    case CsgOperator::SmoothIntersection: return 4;
+    case CsgOperator::SmoothDifference: return 5;
+    case CsgOperator::PolynomialSmoothUnion: return 6;
+    case CsgOperator::PolynomialSmoothIntersection: return 7;
+    case CsgOperator::PolynomialSmoothDifference: return 8;
+    }
+    return 0;
+}
+
+const char* csgFunction(CsgOperator op)
+{
+    switch (op) {
+    case CsgOperator::Union: return "opUnion";
+    case CsgOperator::Intersection: return "opIntersection";
+    case CsgOperator::Difference: return "opDifference";
+    case CsgOperator::SmoothUnion: return "opSmoothUnionExp";
+    case CsgOperator::SmoothIntersection: return "opSmoothIntersectionExp";
+    case CsgOperator::SmoothDifference: return "opSmoothDifferenceExp";
+    case CsgOperator::PolynomialSmoothUnion: return "opSmoothUnionPoly";
+    case CsgOperator::PolynomialSmoothIntersection: return "opSmoothIntersectionPoly";
+    case CsgOperator::PolynomialSmoothDifference: return "opSmoothDifferencePoly";
+    }
+    return "opUnion";
+}
+
+bool hasParameter(CsgOperator op)
+{
+    return !(op == CsgOperator::Union || op == CsgOperator::Intersection ||
+             op == CsgOperator::Difference);
+}
+
+std::string slot(int index)
+{
+    return "uShapeParameters[" + std::to_string(index) + "]";
+}
+
+// Walks shapes once, laying their numbers out in the parameter array and producing either
+// generated GLSL (specialised) or a program for the interpreter (general).
+class ShapeCompiler {
+public:
+    explicit ShapeCompiler(SceneShaderCode& code) : code_(code) {}
+
+    // --- specialised: one GLSL function per shape node, returns its name -------------------
+
+    std::string emitFunction(const Shape& shape)
+    {
+        const std::string name = "shape" + std::to_string(nextFunction_++);
+        std::string body;
+        if (shape.transform) {
+            const int frame = allocateTransform(*shape.transform);
+            const std::string inner = emitGeometry(shape.geometry);
+            body = "    return toWorldDistance(" + inner + "(toLocalPoint(p, " +
+                   std::to_string(frame) + ")), " + std::to_string(frame) + ");\n";
+        } else {
+            body = emitGeometryBody(shape.geometry);
+        }
+        functions_ << "float " << name << "(vec3 p)\n{\n" << body << "}\n\n";
+        return name;
+    }
+
+    // --- general: instructions for shape_interpreter.glsl ---------------------------------
+
+    void emitProgram(const Shape& shape, int depth)
+    {
+        maxDepth_ = std::max(maxDepth_, depth + 1);
+        if (shape.transform) {
+            const int frame = allocateTransform(*shape.transform);
+            code_.shapeProgram.emplace_back(kPushFrame, frame, 0, 0);
+            emitGeometryProgram(shape.geometry, depth + 1);
+            code_.shapeProgram.emplace_back(kPopFrame, frame, 0, 0);
+        } else {
+            emitGeometryProgram(shape.geometry, depth);
+        }
+    }
+
+    std::string functions() const { return functions_.str(); }
+    int maxStackDepth() const { return maxDepth_; }
+    const std::map<std::string, int>& userSdfIds() const { return userIds_; }
+
+private:
+    int allocate(std::initializer_list<glm::vec4> values)
+    {
+        const int first = static_cast<int>(code_.shapeParameters.size());
+        code_.shapeParameters.insert(code_.shapeParameters.end(), values);
+        return first;
+    }
+
+    int allocateTransform(const Transform& transform)
+    {
+        return allocate({glm::vec4(transform.rotation[0], 0.0f),
+                         glm::vec4(transform.rotation[1], 0.0f),
+                         glm::vec4(transform.rotation[2], 0.0f),
+                         glm::vec4(transform.translation, transform.scale)});
+    }
+
+    int userSdfId(const std::string& name)
+    {
+        const auto found = userIds_.find(name);
+        if (found != userIds_.end())
+            return found->second;
+        const int id = static_cast<int>(userIds_.size());
+        userIds_[name] = id;
+        return id;
+    }
+
+    struct Primitive {
+        int kind;
+        int first;
+        int extra;
+        std::string expression;  // specialised code, in terms of p
+    };
+
+    // Lays out a primitive's parameters (the same layout for both variants).
+    Primitive layoutPrimitive(const Geometry& geometry)
+    {
+        if (const auto* sphere = std::get_if<Sphere>(&geometry)) {
+            const int s = allocate({glm::vec4(sphere->center, sphere->radius)});
+            return {kSphere, s, 0, "sdSphere(p - " + slot(s) + ".xyz, " + slot(s) + ".w)"};
+        }
+        if (const auto* polyhedron = std::get_if<Polyhedron>(&geometry)) {
+            const int first = static_cast<int>(code_.shapeParameters.size());
+            std::string expression;
+            for (std::size_t i = 0; i < polyhedron->planes.size(); ++i) {
+                const glm::vec4& plane = polyhedron->planes[i];
+                const float length = glm::length(glm::vec3(plane));
+                const int s = allocate({plane / length});
+                const std::string term = "sdHalfSpace(p, " + slot(s) + ")";
+                expression = i == 0 ? term : "min(" + expression + ", " + term + ")";
+            }
+            return {kPolyhedron, first, static_cast<int>(polyhedron->planes.size()), expression};
+        }
+        if (const auto* box = std::get_if<Box>(&geometry)) {
+            const int s = allocate({glm::vec4(box->center, 0.0f), glm::vec4(box->halfExtents, 0.0f)});
+            return {kBox, s, 0,
+                    "sdBox(p - " + slot(s) + ".xyz, " + slot(s + 1) + ".xyz)"};
+        }
+        if (const auto* torus = std::get_if<Torus>(&geometry)) {
+            const int s = allocate({glm::vec4(torus->center, torus->majorRadius),
+                                    glm::vec4(torus->minorRadius, 0.0f, 0.0f, 0.0f)});
+            return {kTorus, s, 0,
+                    "sdTorus(p - " + slot(s) + ".xyz, " + slot(s) + ".w, " + slot(s + 1) + ".x)"};
+        }
+        if (const auto* cone = std::get_if<Cone>(&geometry)) {
+            const glm::vec2 unit = glm::normalize(cone->slope);
+            const int s = allocate({glm::vec4(cone->apex, 0.0f),
+                                    glm::vec4(unit.x, unit.y, 0.0f, 0.0f)});
+            return {kCone, s, 0,
+                    "sdConeBound(p - " + slot(s) + ".xyz, " + slot(s + 1) + ".xy)"};
+        }
+        if (const auto* cylinder = std::get_if<Cylinder>(&geometry)) {
+            const int s = allocate({glm::vec4(cylinder->center, cylinder->radius),
+                                    glm::vec4(cylinder->halfHeight, 0.0f, 0.0f, 0.0f)});
+            return {kCylinder, s, 0,
+                    "sdCappedCylinder(p - " + slot(s) + ".xyz, " + slot(s) + ".w, " +
+                        slot(s + 1) + ".x)"};
+        }
+        if (const auto* disk = std::get_if<Disk>(&geometry)) {
+            const int s = allocate({glm::vec4(disk->center, disk->radius),
+                                    glm::vec4(glm::normalize(disk->normal), 0.0f)});
+            return {kDisk, s, 0,
+                    "sdDisk(p - " + slot(s) + ".xyz, " + slot(s + 1) + ".xyz, " + slot(s) +
+                        ".w)"};
+        }
+        const auto& user = std::get<UserSdf>(geometry);
+        // A function that may overestimate by a factor L is stepped by distance / L.
+        const int s = allocate({glm::vec4(user.position, 1.0f / user.lipschitz)});
+        return {kUser, s, userSdfId(user.name),
+                user.name + "(p, " + slot(s) + ".xyz) * " + slot(s) + ".w"};
+    }
+
+    std::string emitGeometry(const Geometry& geometry)
+    {
+        const std::string name = "shape" + std::to_string(nextFunction_++);
+        const std::string body = emitGeometryBody(geometry);
+        functions_ << "float " << name << "(vec3 p)\n{\n" << body << "}\n\n";
+        return name;
+    }
+
+    std::string emitGeometryBody(const Geometry& geometry)
+    {
+        if (const auto* node = std::get_if<CsgNode>(&geometry)) {
+            std::vector<std::string> children;
+            for (const Shape& child : node->children)
+                children.push_back(emitFunction(child));
+            std::string parameter;
+            if (hasParameter(node->op))
+                parameter =
+                    ", " + slot(allocate({glm::vec4(node->parameter, 0.0f, 0.0f, 0.0f)})) + ".x";
+            std::string body = "    float d = " + children[0] + "(p);\n";
+            for (std::size_t i = 1; i < children.size(); ++i)
+                body += "    d = " + std::string(csgFunction(node->op)) + "(d, " + children[i] +
+                        "(p)" + parameter + ");\n";
+            return body + "    return d;\n";
+        }
+        return "    return " + layoutPrimitive(geometry).expression + ";\n";
+    }
+
+    void emitGeometryProgram(const Geometry& geometry, int depth)
+    {
+        if (const auto* node = std::get_if<CsgNode>(&geometry)) {
+            for (std::size_t i = 0; i < node->children.size(); ++i)
+                emitProgram(node->children[i], depth + static_cast<int>(i));
+            const int parameter =
+                hasParameter(node->op)
+                    ? allocate({glm::vec4(node->parameter, 0.0f, 0.0f, 0.0f)})
+                    : 0;
+            code_.shapeProgram.emplace_back(kCombine, csgCode(node->op),
+                                            static_cast<int>(node->children.size()), parameter);
+            return;
+        }
+        const Primitive primitive = layoutPrimitive(geometry);
+        code_.shapeProgram.emplace_back(kPrimitive, primitive.kind, primitive.first,
+                                        primitive.extra);
+    }
+
+    SceneShaderCode& code_;
+    std::ostringstream functions_;
+    int nextFunction_ = 0;
+    int maxDepth_ = 1;
+    std::map<std::string, int> userIds_;
+};
+
+void define(std::ostringstream& out, const std::string& name, int value)
+{
+    out << "#define " << name << " " << value << "\n";
+}
+
+std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compiler)
+{
+    std::vector<std::string> objects;
+    for (const SceneObject& object : scene.objects)
+        objects.push_back(compiler.emitFunction(object.shape));
+
+    std::ostringstream out;
+    out << compiler.functions();
+    out << "// The scene: the union of its objects, each the object's own shape function.\n\n";
+    out << "float objectDistance(int object, vec3 p)\n{\n";
+    out << "    switch (object) {\n";
+    for (std::size_t i = 0; i < objects.size(); ++i)
+        out << "    case " << i << ": return " << objects[i] << "(p);\n";
+    out << "    }\n    return FLOAT_MAX;\n}\n\n";
+
+    out << "float sceneDistance(vec3 p)\n{\n    float d = FLOAT_MAX;\n";
+    for (const std::string& object : objects)
+        out << "    d = min(d, " << object << "(p));\n";
+    out << "    return d;\n}\n\n";
+
+    out << "float sceneDistanceAndObject(vec3 p, out int nearest)\n{\n";
+    out << "    float d = FLOAT_MAX;\n    nearest = -1;\n    float candidate;\n";
+    for (std::size_t i = 0; i < objects.size(); ++i)
+        out << "    candidate = " << objects[i] << "(p);\n"
+            << "    if (candidate < d) { d = candidate; nearest = " << i << "; }\n";
+    out << "    return d;\n}\n";
+    return out.str();
+}
+
+std::string userSdfDispatcher(const std::map<std::string, int>& ids)
+{
+    std::ostringstream out;
+    out << "// The general shader reaches user SDFs by number.\n";
+    out << "float callUserSdf(int id, vec3 p, vec3 x)\n{\n";
+    for (const auto& [name, id] : ids)
+        out << "    if (id == " << id << ") return " << name << "(p, x);\n";
+    out << "    return FLOAT_MAX;\n}\n";
+    return out.str();
+}
+
+}  // namespace
+
+SceneShaderCode generateSceneShaderCode(const Scene& scene, ShaderVariant variant)
+{
+    SceneShaderCode code;
+    code.variant = variant;
+    const bool specialized = variant == ShaderVariant::Specialized;
+    code.features = specialized ? analyseFeatures(scene) : SceneFeatures::everything(scene);
+    for (const auto& [name, path] : code.features.userSdfs)
+        code.userSdfFiles.push_back(path);
+
+    ShapeCompiler compiler(code);
+    if (specialized) {
+        code.sceneFunctions = specializedSceneFunctions(scene, compiler);
+    } else {
+        for (const SceneObject& object : scene.objects) {
+            code.objectProgramStart.push_back(static_cast<int>(code.shapeProgram.size()));
+            compiler.emitProgram(object.shape, 0);
+            code.shapeProgram.emplace_back(kEnd, 0, 0, 0);
+        }
+        // Declared before the interpreter module, which calls it.
+        code.sceneFunctions = userSdfDispatcher(compiler.userSdfIds());
+    }
+
+    const SceneFeatures& f = code.features;
+    const int lightCount =
+        static_cast<int>(scene.pointLights.size() + sphereLights(scene).size());
+    std::ostringstream out;
+    define(out, "SHADER_SPECIALIZED", specialized ? 1 : 0);
+    define(out, "OBJECT_COUNT", static_cast<int>(scene.objects.size()));
+    define(out, "OBJECT_ARRAY_SIZE", std::max<int>(1, scene.objects.size()));
+    define(out, "SHAPE_PARAMETER_ARRAY_SIZE", std::max<int>(1, code.shapeParameters.size()));
+    define(out, "SHAPE_PROGRAM_ARRAY_SIZE", std::max<int>(1, code.shapeProgram.size()));
+    define(out, "SHAPE_STACK_DEPTH", compiler.maxStackDepth() + 1);
+    define(out, "PIGMENT_ARRAY_SIZE", std::max<int>(1, scene.pigments.size()));
+    define(out, "FINISH_ARRAY_SIZE", std::max<int>(1, scene.finishes.size()));
+    define(out, "LIGHT_COUNT", lightCount);
+    define(out, "LIGHT_ARRAY_SIZE", std::max(1, lightCount));
+    define(out, "HAS_TRANSFORMS", f.transforms ? 1 : 0);
+    define(out, "HAS_USER_SDFS", f.userSdfs.empty() ? 0 : 1);
+    define(out, "HAS_LAMBERTIAN", f.has(MaterialKind::Lambertian) ? 1 : 0);
+    define(out, "HAS_BLINN_PHONG", f.has(MaterialKind::BlinnPhong) ? 1 : 0);
+    define(out, "HAS_MIRROR", f.has(MaterialKind::Mirror) ? 1 : 0);
+    define(out, "HAS_DIELECTRIC", f.has(MaterialKind::Dielectric) ? 1 : 0);
+    define(out, "HAS_CHECKER_PIGMENT", f.has(PigmentKind::Checker) ? 1 : 0);
+    define(out, "HAS_TEXTURE_PIGMENT", f.has(PigmentKind::Texture) ? 1 : 0);
+    define(out, "HAS_POINT_LIGHTS", f.pointLights ? 1 : 0);
+    define(out, "HAS_SPHERE_LIGHTS", f.sphereLights ? 1 : 0);
+    out << "#define ENVIRONMENT_KIND_FROM_UNIFORM (-1)\n";
+    if (specialized)
+        define(out, "ENVIRONMENT_KIND", static_cast<int>(f.environment));
+    else
+        out << "#define ENVIRONMENT_KIND ENVIRONMENT_KIND_FROM_UNIFORM\n";
+    code.defines = out.str();
+    return code;
+}
+
+}  // namespace render

@@ -1,0 +1,40 @@
+#pragma once
+#include "scene/Scene.h"
+#include "scene/SceneFeatures.h"
+
+#include <glm/glm.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace render {
+
+// How the fragment shader is built for a scene.
+enum class ShaderVariant {
+    // Only the features the scene uses, and its shapes as straight-line generated code.
+    Specialized,
+    // Every feature, and the shapes interpreted from uniforms (`--no-specialize`).
+    General,
+};
+
+// The scene-dependent part of the path-tracing shader: the #defines that switch modules on
+// and size the uniform arrays, the distance functions of the scene, and the shape
+// parameters they read. Only structure (which shapes, which CSG tree, which features)
+// reaches the code; every number lands in `shapeParameters`, so editing a value gives the
+// same code and only new uniforms.
+struct SceneShaderCode {
+    ShaderVariant variant = ShaderVariant::Specialized;
+    scene::SceneFeatures features;  // what the shader is built for
+    std::string defines;            // lines for the preamble, after #version
+    std::vector<std::filesystem::path> userSdfFiles;
+    std::string sceneFunctions;     // sceneDistance, sceneDistanceAndObject, objectDistance
+
+    std::vector<glm::vec4> shapeParameters;
+    std::vector<glm::ivec4> shapeProgram;  // General only
+    std::vector<int> objectProgramStart;   // General only: per object
+};
+
+SceneShaderCode generateSceneShaderCode(const scene::Scene& scene, ShaderVariant variant);
+
+}  // namespace render

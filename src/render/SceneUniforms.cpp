@@ -1,0 +1,191 @@
+#include "render/SceneUniforms.h"
+
+#include "gl/Shader.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+#include <map>
+
+namespace render {
+
+using namespace scene;
+
+namespace {
+
+constexpr float kPi = 3.14159265358979f;
+
+int materialCode(MaterialKind kind)
+{
+    switch (kind) {
+    case MaterialKind::Lambertian: return 0;
+    case MaterialKind::BlinnPhong: return 1;
+    case MaterialKind::Mirror: return 2;
+    case MaterialKind::Dielectric: return 3;
+    }
+    return 0;
+}
+
+int pigmentCode(PigmentKind kind)
+{
+    switch (kind) {
+    case PigmentKind::Solid: return 0;
+    case PigmentKind::Checker: return 1;
+    case PigmentKind::Texture: return 2;
+    }
+    return 0;
+}
+
+float average(const glm::vec3& v)
+{
+    return (v.x + v.y + v.z) / 3.0f;
+}
+
+template <typename Vector>
+void setArray(const gl::Program& program, const char* name, const std::vector<Vector>& values);
+
+template <>
+void setArray(const gl::Program& program, const char* name, const std::vector<glm::vec4>& values)
+{
+    const GLint location = program.uniformLocation(name);
+    if (location >= 0 && !values.empty())
+        glUniform4fv(location, static_cast<GLsizei>(values.size()), glm::value_ptr(values[0]));
+}
+
+template <>
+void setArray(const gl::Program& program, const char* name, const std::vector<glm::ivec4>& values)
+{
+    const GLint location = program.uniformLocation(name);
+    if (location >= 0 && !values.empty())
+        glUniform4iv(location, static_cast<GLsizei>(values.size()), glm::value_ptr(values[0]));
+}
+
+void setFloat(const gl::Program& program, const char* name, float value)
+{
+    glUniform1f(program.uniformLocation(name), value);
+}
+
+void setInt(const gl::Program& program, const char* name, int value)
+{
+    glUniform1i(program.uniformLocation(name), value);
+}
+
+void setVec3(const gl::Program& program, const char* name, const glm::vec3& value)
+{
+    glUniform3fv(program.uniformLocation(name), 1, glm::value_ptr(value));
+}
+
+}  // namespace
+
+std::vector<float> lightPowers(const Scene& scene)
+{
+    std::vector<float> powers;
+    for (const PointLight& light : scene.pointLights)
+        powers.push_back(4.0f * kPi * average(light.intensity));
+    for (const SphereLight& light : sphereLights(scene))
+        powers.push_back(4.0f * kPi * kPi * light.radius * light.radius * average(light.radiance));
+    return powers;
+}
+
+SceneUniforms packSceneUniforms(const Scene& scene, const SceneShaderCode& code)
+{
+    SceneUniforms packed;
+
+    std::map<std::filesystem::path, int> layers;
+    for (const Pigment& pigment : scene.pigments) {
+        float layer = 0.0f;
+        if (pigment.kind == PigmentKind::Texture) {
+            auto found = layers.find(pigment.texturePath);
+            if (found == layers.end()) {
+                found = layers.emplace(pigment.texturePath, static_cast<int>(layers.size())).first;
+                packed.textureLayers.push_back(pigment.texturePath);
+            }
+            layer = static_cast<float>(found->second);
+        }
+        packed.pigments.emplace_back(static_cast<float>(pigmentCode(pigment.kind)), pigment.size,
+                                     layer, 0.0f);
+        packed.pigments.emplace_back(pigment.color, 0.0f);
+        packed.pigments.emplace_back(pigment.secondColor, 0.0f);
+    }
+
+    for (const Finish& finish : scene.finishes) {
+        packed.finishes.emplace_back(finish.emission, finish.phongExponent);
+        packed.finishes.emplace_back(static_cast<float>(materialCode(finish.material())),
+                                     finish.ior, 0.0f, 0.0f);
+    }
+
+    const std::vector<SphereLight> spheres = sphereLights(scene);
+    const std::vector<float> powers = lightPowers(scene);
+    float totalPower = 0.0f;
+    for (float power : powers)
+        totalPower += power;
+    std::vector<int> lightOfObject(scene.objects.size(), -1);
+    float cumulative = 0.0f;
+    for (std::size_t i = 0; i < powers.size(); ++i) {
+        const float probability = totalPower > 0.0f ? powers[i] / totalPower : 0.0f;
+        cumulative += probability;
+        // The last light closes the table exactly at 1 whatever the rounding.
+        const float cdf = i + 1 == powers.size() ? 1.0f : cumulative;
+        if (i < scene.pointLights.size()) {
+            const PointLight& light = scene.pointLights[i];
+            packed.lights.emplace_back(light.position, 0.0f);
+            packed.lights.emplace_back(light.intensity, probability);
+            packed.lights.emplace_back(cdf, -1.0f, 0.0f, 0.0f);
+        } else {
+            const SphereLight& light = spheres[i - scene.pointLights.size()];
+            lightOfObject[light.object] = static_cast<int>(i);
+            packed.lights.emplace_back(light.center, light.radius);
+            packed.lights.emplace_back(light.radiance, probability);
+            packed.lights.emplace_back(cdf, static_cast<float>(light.object), 0.0f, 0.0f);
+        }
+    }
+
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        const int programStart = i < code.objectProgramStart.size() ? code.objectProgramStart[i] : 0;
+        packed.objects.emplace_back(object.pigment, object.finish, lightOfObject[i], programStart);
+    }
+
+    packed.cameraFrame = cameraFrame(scene.camera);
+    packed.cameraEye = scene.camera.eye;
+    packed.tanHalfFovy =
+        std::tan(0.5f * scene.camera.verticalFieldOfViewDegrees * kPi / 180.0f);
+    packed.bounds = computeSceneBounds(scene);
+    packed.environment = scene.environment;
+    return packed;
+}
+
+void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
+                    const SceneShaderCode& code, const RenderSettings& settings, int width,
+                    int height)
+{
+    setArray(program, "uShapeParameters", code.shapeParameters);
+    setArray(program, "uShapeProgram", code.shapeProgram);
+    setArray(program, "uObjects", uniforms.objects);
+    setArray(program, "uPigments", uniforms.pigments);
+    setArray(program, "uFinishes", uniforms.finishes);
+    setArray(program, "uLights", uniforms.lights);
+
+    setVec3(program, "uCameraEye", uniforms.cameraEye);
+    setVec3(program, "uCameraRight", uniforms.cameraFrame.right);
+    setVec3(program, "uCameraUp", uniforms.cameraFrame.trueUp);
+    setVec3(program, "uCameraForward", uniforms.cameraFrame.forward);
+    setFloat(program, "uTanHalfFovy", uniforms.tanHalfFovy);
+    glUniform2f(program.uniformLocation("uImageSize"), static_cast<float>(width),
+                static_cast<float>(height));
+
+    setInt(program, "uEnvironmentKind", static_cast<int>(uniforms.environment.kind));
+    setVec3(program, "uEnvironmentColor", uniforms.environment.color);
+
+    setFloat(program, "uMinimumHitDistance", uniforms.bounds.minimumHitDistance());
+    setFloat(program, "uFarDistance", uniforms.bounds.farDistance());
+    setFloat(program, "uHitTolerance", settings.hitTolerance);
+    setInt(program, "uMaxMarchSteps", settings.maxMarchSteps);
+    setFloat(program, "uOverRelaxation", settings.overRelaxation);
+    setInt(program, "uMaxBounces", settings.maxBounces);
+    setInt(program, "uRussianRouletteDepth", settings.russianRouletteDepth);
+    setInt(program, "uUseMis", settings.multipleImportanceSampling ? 1 : 0);
+    setInt(program, "uExactFresnel", settings.dielectricFresnel == FresnelModel::Exact ? 1 : 0);
+}
+
+}  // namespace render

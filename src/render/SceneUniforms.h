@@ -1,0 +1,46 @@
+#pragma once
+#include "render/RenderSettings.h"
+#include "render/SceneShaderGenerator.h"
+#include "scene/Scene.h"
+#include "scene/SceneBounds.h"
+
+#include <glm/glm.hpp>
+
+#include <filesystem>
+#include <vector>
+
+namespace gl {
+class Program;
+}
+
+namespace render {
+
+// The scene's numbers laid out as the shader's uniform arrays (shaders/modules/scene_data.glsl
+// documents each record). Built from the scene on the CPU; uploaded without recompiling.
+struct SceneUniforms {
+    std::vector<glm::ivec4> objects;
+    std::vector<glm::vec4> pigments;
+    std::vector<glm::vec4> finishes;
+    std::vector<glm::vec4> lights;
+    // Image files in texture-array layer order; pigments refer to them by layer.
+    std::vector<std::filesystem::path> textureLayers;
+
+    scene::CameraFrame cameraFrame;
+    glm::vec3 cameraEye{0.0f};
+    float tanHalfFovy = 1.0f;
+    scene::SceneBounds bounds;
+    scene::Environment environment;
+};
+
+SceneUniforms packSceneUniforms(const scene::Scene& scene, const SceneShaderCode& code);
+
+// Emitted power of each light, the quantity lights are selected by: 4 pi I for a point
+// light, 4 pi^2 r^2 L for a sphere of radiance L (channels averaged).
+std::vector<float> lightPowers(const scene::Scene& scene);
+
+// Sets every scene and settings uniform of `program` (which must be in use).
+void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
+                    const SceneShaderCode& code, const RenderSettings& settings, int width,
+                    int height);
+
+}  // namespace render

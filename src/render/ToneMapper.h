@@ -1,0 +1,36 @@
+#pragma once
+#include "gl/Shader.h"
+#include "gl/Texture.h"
+#include "gl/VertexArray.h"
+#include "io/Image.h"
+
+#include <filesystem>
+
+namespace render {
+
+// The display pass (shaders/modules/tone_map.frag): linear radiance to a picture, drawn to
+// the window or to an offscreen target that is read back for image files.
+class ToneMapper {
+public:
+    explicit ToneMapper(const std::filesystem::path& shaderDirectory);
+
+    // Draws `estimate` (width x height) to whatever framebuffer is bound, of size target.
+    void draw(const gl::Texture& estimate, int width, int height, int targetWidth,
+              int targetHeight, const gl::VertexArray& triangle) const;
+
+    // The tone-mapped picture of `estimate` as display values in [0, 1], top row first.
+    io::Image render(const gl::Texture& estimate, int width, int height,
+                     const gl::VertexArray& triangle) const;
+
+private:
+    gl::Program program_;
+};
+
+// Reads `width` x `height` RGB pixels of the bound read framebuffer as values in [0, 1],
+// top row first.
+io::Image readDisplayPixels(int width, int height);
+
+// The same from the window's back buffer, after the picture was drawn and before it is shown.
+io::Image readWindowPixels(int width, int height);
+
+}  // namespace render

@@ -1,0 +1,71 @@
+#include "scene/Scene.h"
+
+namespace scene {
+
+CameraFrame cameraFrame(const Camera& camera)
+{
+    CameraFrame frame;
+    frame.forward = glm::normalize(camera.target - camera.eye);
+    frame.right = glm::normalize(glm::cross(frame.forward, camera.up));
+    frame.trueUp = glm::cross(frame.right, frame.forward);
+    return frame;
+}
+
+MaterialKind Finish::material() const
+{
+    if (transmission > 0.0f)
+        return MaterialKind::Dielectric;
+    if (reflection > 0.0f)
+        return MaterialKind::Mirror;
+    if (phongExponent > 0.0f)
+        return MaterialKind::BlinnPhong;
+    return MaterialKind::Lambertian;
+}
+
+bool Finish::isEmissive() const
+{
+    return emission.r > 0.0f || emission.g > 0.0f || emission.b > 0.0f;
+}
+
+Transform compose(const Transform& outer, const Transform& inner)
+{
+    Transform result;
+    result.rotation = outer.rotation * inner.rotation;
+    result.scale = outer.scale * inner.scale;
+    result.translation = applyTransform(outer, inner.translation);
+    return result;
+}
+
+glm::vec3 applyTransform(const Transform& transform, const glm::vec3& local)
+{
+    return transform.rotation * (transform.scale * local) + transform.translation;
+}
+
+glm::vec3 skyRadiance(const glm::vec3& unitDirection)
+{
+    return 0.5f * glm::vec3(0.7f, 0.8f, 1.0f) * (1.0f - 0.5f * unitDirection.y);
+}
+
+std::vector<SphereLight> sphereLights(const Scene& scene)
+{
+    std::vector<SphereLight> lights;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        const auto* sphere = std::get_if<Sphere>(&object.shape.geometry);
+        if (sphere == nullptr || !scene.finishes[object.finish].isEmissive())
+            continue;
+        SphereLight light;
+        light.object = static_cast<int>(i);
+        light.center = sphere->center;
+        light.radius = sphere->radius;
+        if (object.shape.transform) {
+            light.center = applyTransform(*object.shape.transform, sphere->center);
+            light.radius = object.shape.transform->scale * sphere->radius;
+        }
+        light.radiance = scene.finishes[object.finish].emission;
+        lights.push_back(light);
+    }
+    return lights;
+}
+
+}  // namespace scene

@@ -1,0 +1,192 @@
+#pragma once
+// The scene model: what a scene file means, in plain values. It knows nothing of OpenGL or
+// of how the renderer lays the scene out for the GPU (see render/SceneUniforms).
+#include <glm/glm.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace scene {
+
+struct Camera {
+    glm::vec3 eye{0.0f};
+    glm::vec3 target{0.0f, 0.0f, -1.0f};
+    glm::vec3 up{0.0f, 1.0f, 0.0f};
+    float verticalFieldOfViewDegrees = 45.0f;
+};
+
+// Orthonormal camera frame as the format defines it: forward = normalize(target - eye),
+// right = normalize(cross(forward, up)), trueUp = cross(right, forward).
+struct CameraFrame {
+    glm::vec3 right;
+    glm::vec3 trueUp;
+    glm::vec3 forward;
+};
+CameraFrame cameraFrame(const Camera& camera);
+
+struct PointLight {
+    glm::vec3 position{0.0f};
+    glm::vec3 intensity{0.0f};  // radiant intensity I, W/sr per channel
+};
+
+enum class PigmentKind { Solid, Checker, Texture };
+
+struct Pigment {
+    PigmentKind kind = PigmentKind::Solid;
+    glm::vec3 color{1.0f};         // solid colour, or the checker's first colour
+    glm::vec3 secondColor{0.0f};   // checker only
+    float size = 1.0f;             // checker cube edge, or world units per texture tile
+    std::string textureName;       // texture only: as written in the file
+    std::filesystem::path texturePath;  // texture only: where it was found
+    int line = 0;                  // where the pigment is written, for messages
+};
+
+enum class MaterialKind { Lambertian, BlinnPhong, Mirror, Dielectric };
+
+struct Finish {
+    glm::vec3 emission{0.0f};  // emitted radiance; only spheres may emit
+    float phongExponent = 0.0f;
+    float reflection = 0.0f;    // kr: a switch, only > 0 matters
+    float transmission = 0.0f;  // kt: a switch, only > 0 matters
+    float ior = 1.0f;
+
+    // The format's selection order: kt > 0, else kr > 0, else alpha > 0, else Lambertian.
+    MaterialKind material() const;
+    bool isEmissive() const;
+};
+
+// --- geometry ---------------------------------------------------------------------------
+
+struct Sphere {
+    glm::vec3 center{0.0f};
+    float radius = 1.0f;
+};
+
+// Union of the solid half-spaces dot(normal, x) + offset <= 0, as written (not normalised).
+struct Polyhedron {
+    std::vector<glm::vec4> planes;
+};
+
+struct Box {
+    glm::vec3 center{0.0f};
+    glm::vec3 halfExtents{1.0f};
+};
+
+struct Torus {
+    glm::vec3 center{0.0f};
+    float majorRadius = 1.0f;
+    float minorRadius = 0.25f;
+};
+
+// Infinite cone, apex at `apex`, axis y, opening towards -y; `slope` is the format's (a, b).
+struct Cone {
+    glm::vec3 apex{0.0f};
+    glm::vec2 slope{1.0f, 1.0f};
+};
+
+struct Cylinder {
+    glm::vec3 center{0.0f};
+    float radius = 1.0f;
+    float halfHeight = 1.0f;
+};
+
+struct Disk {
+    glm::vec3 center{0.0f};
+    glm::vec3 normal{0.0f, 1.0f, 0.0f};  // as written, not normalised
+    float radius = 1.0f;
+};
+
+// `float NAME(vec3 p, vec3 x)` from a GLSL file. The file may declare, in comment lines,
+//   // @bound R        every point of the surface lies within R of the position x
+//   // @lipschitz L    the function may overestimate the distance by up to a factor L
+// The first lets the renderer skip the function far from it; the second makes the sphere
+// tracer take steps of distance / L, so a non-Lipschitz function does not tunnel.
+struct UserSdf {
+    std::string name;
+    std::filesystem::path sourcePath;
+    glm::vec3 position{0.0f};
+    std::optional<float> boundingRadius;
+    float lipschitz = 1.0f;
+};
+
+enum class CsgOperator {
+    Union,
+    Intersection,
+    Difference,
+    SmoothUnion,          // exponential smooth-min, parameter: sharpness k
+    SmoothIntersection,
+    SmoothDifference,
+    PolynomialSmoothUnion,  // polynomial smooth-min, parameter: blend radius
+    PolynomialSmoothIntersection,
+    PolynomialSmoothDifference,
+};
+
+struct Shape;
+
+struct CsgNode {
+    CsgOperator op = CsgOperator::Union;
+    float parameter = 0.0f;
+    std::vector<Shape> children;  // two or more; difference subtracts all others from the first
+};
+
+// A similarity transform: world = rotation * (scale * local) + translation.
+struct Transform {
+    glm::mat3 rotation{1.0f};
+    glm::vec3 translation{0.0f};
+    float scale = 1.0f;
+};
+
+// The transform that applies `inner` first, then `outer`.
+Transform compose(const Transform& outer, const Transform& inner);
+glm::vec3 applyTransform(const Transform& transform, const glm::vec3& local);
+
+using Geometry =
+    std::variant<Sphere, Polyhedron, Box, Torus, Cone, Cylinder, Disk, UserSdf, CsgNode>;
+
+struct Shape {
+    Geometry geometry;
+    std::optional<Transform> transform;
+};
+
+struct SceneObject {
+    int pigment = 0;
+    int finish = 0;
+    Shape shape;
+    int line = 0;  // where the object starts in its file, for messages
+};
+
+enum class EnvironmentKind { None, Sky, Constant };
+
+struct Environment {
+    EnvironmentKind kind = EnvironmentKind::Sky;
+    glm::vec3 color{0.0f};  // Constant only
+};
+
+// The format's default sky, 0.5 * (0.7, 0.8, 1.0) * (1 - 0.5 * d.y).
+glm::vec3 skyRadiance(const glm::vec3& unitDirection);
+
+struct Scene {
+    std::filesystem::path sourcePath;
+    Camera camera;
+    std::vector<PointLight> pointLights;
+    std::vector<Pigment> pigments;
+    std::vector<Finish> finishes;
+    std::vector<SceneObject> objects;
+    Environment environment;
+};
+
+// A sphere whose finish emits: a spherical area light.
+struct SphereLight {
+    int object = 0;
+    glm::vec3 center{0.0f};
+    float radius = 0.0f;
+    glm::vec3 radiance{0.0f};
+};
+
+// Every emissive top-level sphere, in object order (with any transform applied).
+std::vector<SphereLight> sphereLights(const Scene& scene);
+
+}  // namespace scene

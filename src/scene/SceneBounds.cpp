@@ -1,0 +1,194 @@
+#include "scene/SceneBounds.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace scene {
+
+namespace {
+
+struct Box3 {
+    glm::vec3 low{std::numeric_limits<float>::max()};
+    glm::vec3 high{std::numeric_limits<float>::lowest()};
+
+    void add(const glm::vec3& point)
+    {
+        low = glm::min(low, point);
+        high = glm::max(high, point);
+    }
+    void add(const glm::vec3& center, float radius)
+    {
+        add(center - glm::vec3(radius));
+        add(center + glm::vec3(radius));
+    }
+    bool empty() const { return low.x > high.x; }
+};
+
+ShapeBound finiteBound(const glm::vec3& center, float radius)
+{
+    return {true, center, radius};
+}
+
+ShapeBound enclose(const std::vector<ShapeBound>& bounds, float margin)
+{
+    Box3 box;
+    for (const ShapeBound& bound : bounds) {
+        if (!bound.finite)
+            return {};
+        box.add(bound.center, bound.radius);
+    }
+    const glm::vec3 center = 0.5f * (box.low + box.high);
+    return finiteBound(center, 0.5f * glm::length(box.high - box.low) + margin);
+}
+
+// How far a smooth operator may push the surface beyond the plain one.
+float smoothMargin(const CsgNode& node)
+{
+    const float children = static_cast<float>(node.children.size());
+    switch (node.op) {
+    case CsgOperator::SmoothUnion:
+    case CsgOperator::SmoothIntersection:
+    case CsgOperator::SmoothDifference:
+        return std::log(children) / node.parameter;
+    case CsgOperator::PolynomialSmoothUnion:
+    case CsgOperator::PolynomialSmoothIntersection:
+    case CsgOperator::PolynomialSmoothDifference:
+        return 0.25f * node.parameter * (children - 1.0f);
+    default:
+        return 0.0f;
+    }
+}
+
+struct LocalBound {
+    const Shape& shape;
+
+    ShapeBound operator()(const Sphere& sphere) const
+    {
+        return finiteBound(sphere.center, sphere.radius);
+    }
+    ShapeBound operator()(const Polyhedron&) const { return {}; }
+    ShapeBound operator()(const Box& box) const
+    {
+        return finiteBound(box.center, glm::length(box.halfExtents));
+    }
+    ShapeBound operator()(const Torus& torus) const
+    {
+        return finiteBound(torus.center, torus.majorRadius + torus.minorRadius);
+    }
+    ShapeBound operator()(const Cone&) const { return {}; }
+    ShapeBound operator()(const Cylinder& cylinder) const
+    {
+        return finiteBound(cylinder.center,
+                           std::sqrt(cylinder.radius * cylinder.radius +
+                                     cylinder.halfHeight * cylinder.halfHeight));
+    }
+    ShapeBound operator()(const Disk& disk) const
+    {
+        return finiteBound(disk.center, disk.radius);
+    }
+    ShapeBound operator()(const UserSdf& user) const
+    {
+        if (!user.boundingRadius)
+            return {};
+        return finiteBound(user.position, *user.boundingRadius);
+    }
+    ShapeBound operator()(const CsgNode& node) const
+    {
+        std::vector<ShapeBound> children;
+        for (const Shape& child : node.children)
+            children.push_back(boundShape(child));
+        const bool subtractive = node.op == CsgOperator::Difference ||
+                                 node.op == CsgOperator::SmoothDifference ||
+                                 node.op == CsgOperator::PolynomialSmoothDifference;
+        const bool intersecting = node.op == CsgOperator::Intersection ||
+                                  node.op == CsgOperator::SmoothIntersection ||
+                                  node.op == CsgOperator::PolynomialSmoothIntersection;
+        if (subtractive)
+            children.resize(1);
+        if (intersecting) {
+            // Any one finite child bounds an intersection; take the smallest.
+            ShapeBound best;
+            for (const ShapeBound& child : children)
+                if (child.finite && (!best.finite || child.radius < best.radius))
+                    best = child;
+            if (best.finite)
+                best.radius += smoothMargin(node);
+            return best;
+        }
+        return enclose(children, smoothMargin(node));
+    }
+};
+
+// A point on each infinite shape, so that the bounds reach it.
+void addInfinitePoints(const Shape& shape, const glm::vec3& camera, Box3& box)
+{
+    auto toWorld = [&](const glm::vec3& local) {
+        return shape.transform ? applyTransform(*shape.transform, local) : local;
+    };
+    if (const auto* polyhedron = std::get_if<Polyhedron>(&shape.geometry)) {
+        glm::vec3 localCamera = camera;
+        if (shape.transform)
+            localCamera = glm::transpose(shape.transform->rotation) *
+                          (camera - shape.transform->translation) / shape.transform->scale;
+        for (const glm::vec4& plane : polyhedron->planes) {
+            const glm::vec3 normal(plane);
+            const float distance = (glm::dot(normal, localCamera) + plane.w) /
+                                   glm::dot(normal, normal);
+            box.add(toWorld(localCamera - distance * normal));
+        }
+    } else if (const auto* cone = std::get_if<Cone>(&shape.geometry)) {
+        box.add(toWorld(cone->apex));
+    } else if (const auto* node = std::get_if<CsgNode>(&shape.geometry)) {
+        for (const Shape& child : node->children) {
+            Shape placed = child;
+            if (shape.transform)
+                placed.transform =
+                    compose(*shape.transform, child.transform.value_or(Transform{}));
+            addInfinitePoints(placed, camera, box);
+        }
+    } else if (const auto* user = std::get_if<UserSdf>(&shape.geometry)) {
+        if (!user->boundingRadius)
+            box.add(toWorld(user->position));
+    }
+}
+
+}  // namespace
+
+ShapeBound boundShape(const Shape& shape)
+{
+    ShapeBound local = std::visit(LocalBound{shape}, shape.geometry);
+    if (!local.finite || !shape.transform)
+        return local;
+    const Transform& transform = *shape.transform;
+    local.center = applyTransform(transform, local.center);
+    local.radius *= transform.scale;
+    return local;
+}
+
+float SceneBounds::minimumHitDistance() const
+{
+    return 1e-5f * std::max(radius, glm::length(center));
+}
+
+SceneBounds computeSceneBounds(const Scene& scene)
+{
+    Box3 box;
+    box.add(scene.camera.eye);
+    for (const PointLight& light : scene.pointLights)
+        box.add(light.position);
+    for (const SceneObject& object : scene.objects) {
+        const ShapeBound bound = boundShape(object.shape);
+        if (bound.finite)
+            box.add(bound.center, bound.radius);
+        addInfinitePoints(object.shape, scene.camera.eye, box);
+    }
+    SceneBounds bounds;
+    bounds.center = 0.5f * (box.low + box.high);
+    bounds.radius = 0.5f * glm::length(box.high - box.low);
+    if (!(bounds.radius > 0.0f) || !std::isfinite(bounds.radius))
+        bounds.radius = std::max(1.0f, glm::length(bounds.center) * 1e-3f);
+    return bounds;
+}
+
+}  // namespace scene

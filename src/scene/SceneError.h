@@ -1,0 +1,26 @@
+#pragma once
+#include <stdexcept>
+#include <string>
+
+namespace scene {
+
+// A scene file that cannot be rendered. what() is the one line the user sees:
+//   scenes/x.in:12: read 'sphre', expected an object type (sphere, polyhedron, ...)
+class SceneError : public std::runtime_error {
+public:
+    SceneError(const std::string& file, int line, const std::string& token,
+               const std::string& expected);
+
+    const std::string& file() const { return file_; }
+    int line() const { return line_; }
+    const std::string& token() const { return token_; }
+    const std::string& expected() const { return expected_; }
+
+private:
+    std::string file_;
+    int line_;
+    std::string token_;
+    std::string expected_;
+};
+
+}  // namespace scene

@@ -1,0 +1,173 @@
+#include "scene/SceneFeatures.h"
+
+#include <sstream>
+
+namespace scene {
+
+namespace {
+
+struct ShapeFeatures {
+    SceneFeatures& features;
+
+    void operator()(const Sphere&) { features.primitives.insert(PrimitiveKind::Sphere); }
+    void operator()(const Polyhedron&) { features.primitives.insert(PrimitiveKind::Polyhedron); }
+    void operator()(const Box&) { features.primitives.insert(PrimitiveKind::Box); }
+    void operator()(const Torus&) { features.primitives.insert(PrimitiveKind::Torus); }
+    void operator()(const Cone&) { features.primitives.insert(PrimitiveKind::Cone); }
+    void operator()(const Cylinder&) { features.primitives.insert(PrimitiveKind::Cylinder); }
+    void operator()(const Disk&) { features.primitives.insert(PrimitiveKind::Disk); }
+    void operator()(const UserSdf& user) { features.userSdfs[user.name] = user.sourcePath; }
+    void operator()(const CsgNode& node)
+    {
+        features.csgOperators.insert(node.op);
+        for (const Shape& child : node.children)
+            visit(child);
+    }
+
+    void visit(const Shape& shape)
+    {
+        if (shape.transform)
+            features.transforms = true;
+        std::visit(*this, shape.geometry);
+    }
+};
+
+template <typename Kind>
+std::string join(const std::set<Kind>& kinds)
+{
+    std::string text;
+    for (Kind kind : kinds)
+        text += (text.empty() ? "" : ", ") + std::string(toString(kind));
+    return text.empty() ? "none" : text;
+}
+
+}  // namespace
+
+SceneFeatures analyseFeatures(const Scene& scene)
+{
+    SceneFeatures features;
+    ShapeFeatures shapes{features};
+    for (const SceneObject& object : scene.objects) {
+        shapes.visit(object.shape);
+        features.materials.insert(scene.finishes[object.finish].material());
+        features.pigments.insert(scene.pigments[object.pigment].kind);
+    }
+    features.pointLights = !scene.pointLights.empty();
+    features.sphereLights = !sphereLights(scene).empty();
+    features.environment = scene.environment.kind;
+    return features;
+}
+
+SceneFeatures SceneFeatures::everything(const Scene& scene)
+{
+    SceneFeatures features;
+    features.primitives = {PrimitiveKind::Sphere, PrimitiveKind::Polyhedron, PrimitiveKind::Box,
+                           PrimitiveKind::Torus,  PrimitiveKind::Cone,       PrimitiveKind::Cylinder,
+                           PrimitiveKind::Disk};
+    features.userSdfs = analyseFeatures(scene).userSdfs;
+    features.csgOperators = {CsgOperator::Union,
+                             CsgOperator::Intersection,
+                             CsgOperator::Difference,
+                             CsgOperator::SmoothUnion,
+                             CsgOperator::SmoothIntersection,
+                             CsgOperator::SmoothDifference,
+                             CsgOperator::PolynomialSmoothUnion,
+                             CsgOperator::PolynomialSmoothIntersection,
+                             CsgOperator::PolynomialSmoothDifference};
+    features.transforms = true;
+    features.materials = {MaterialKind::Lambertian, MaterialKind::BlinnPhong, MaterialKind::Mirror,
+                          MaterialKind::Dielectric};
+    features.pigments = {PigmentKind::Solid, PigmentKind::Checker, PigmentKind::Texture};
+    features.pointLights = true;
+    features.sphereLights = true;
+    features.environment = scene.environment.kind;
+    return features;
+}
+
+std::string SceneFeatures::describe() const
+{
+    std::ostringstream text;
+    text << "primitives:    " << join(primitives) << "\n";
+    text << "user SDFs:     ";
+    if (userSdfs.empty())
+        text << "none";
+    for (auto it = userSdfs.begin(); it != userSdfs.end(); ++it)
+        text << (it == userSdfs.begin() ? "" : ", ") << it->first << " (" << it->second.string()
+             << ")";
+    text << "\n";
+    text << "CSG operators: " << join(csgOperators) << "\n";
+    text << "transforms:    " << (transforms ? "yes" : "no") << "\n";
+    text << "materials:     " << join(materials) << "\n";
+    text << "pigments:      " << join(pigments) << "\n";
+    std::string lights;
+    if (pointLights)
+        lights += "point";
+    if (sphereLights)
+        lights += std::string(lights.empty() ? "" : ", ") + "sphere";
+    text << "lights:        " << (lights.empty() ? "none" : lights) << "\n";
+    text << "environment:   " << toString(environment) << "\n";
+    return text.str();
+}
+
+const char* toString(PrimitiveKind kind)
+{
+    switch (kind) {
+    case PrimitiveKind::Sphere: return "sphere";
+    case PrimitiveKind::Polyhedron: return "polyhedron";
+    case PrimitiveKind::Box: return "box";
+    case PrimitiveKind::Torus: return "torus";
+    case PrimitiveKind::Cone: return "cone";
+    case PrimitiveKind::Cylinder: return "cylinder";
+    case PrimitiveKind::Disk: return "disk";
+    }
+    return "?";
+}
+
+const char* toString(MaterialKind kind)
+{
+    switch (kind) {
+    case MaterialKind::Lambertian: return "lambertian";
+    case MaterialKind::BlinnPhong: return "blinn-phong";
+    case MaterialKind::Mirror: return "mirror";
+    case MaterialKind::Dielectric: return "dielectric";
+    }
+    return "?";
+}
+
+const char* toString(PigmentKind kind)
+{
+    switch (kind) {
+    case PigmentKind::Solid: return "solid";
+    case PigmentKind::Checker: return "checker";
+    case PigmentKind::Texture: return "texmap";
+    }
+    return "?";
+}
+
+const char* toString(CsgOperator op)
+{
+    switch (op) {
+    case CsgOperator::Union: return "union";
+    case CsgOperator::Intersection: return "intersection";
+    case CsgOperator::Difference: return "difference";
+    case CsgOperator::SmoothUnion: return "smooth_union exp";
+    case CsgOperator::SmoothIntersection: return "smooth_intersection exp";
+    case CsgOperator::SmoothDifference: return "smooth_difference exp";
+    case CsgOperator::PolynomialSmoothUnion: return "smooth_union poly";
+    case CsgOperator::PolynomialSmoothIntersection: return "smooth_intersection poly";
+    case CsgOperator::PolynomialSmoothDifference: return "smooth_difference poly";
+    }
+    return "?";
+}
+
+const char* toString(EnvironmentKind kind)
+{
+    switch (kind) {
+    case EnvironmentKind::None: return "none";
+    case EnvironmentKind::Sky: return "sky";
+    case EnvironmentKind::Constant: return "constant";
+    }
+    return "?";
+}
+
+}  // namespace scene

@@ -1,0 +1,50 @@
+#pragma once
+#include "scene/Scene.h"
+
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+
+namespace scene {
+
+enum class PrimitiveKind { Sphere, Polyhedron, Box, Torus, Cone, Cylinder, Disk };
+
+// What a scene uses, so that the shader can be built with nothing else (see
+// render/SceneShaderGenerator). Only what is referenced counts: a finish no object uses adds
+// no material.
+struct SceneFeatures {
+    std::set<PrimitiveKind> primitives;
+    std::map<std::string, std::filesystem::path> userSdfs;  // name -> file
+    std::set<CsgOperator> csgOperators;
+    bool transforms = false;
+
+    std::set<MaterialKind> materials;
+    std::set<PigmentKind> pigments;
+
+    bool pointLights = false;
+    bool sphereLights = false;
+    EnvironmentKind environment = EnvironmentKind::Sky;
+
+    bool has(PrimitiveKind kind) const { return primitives.count(kind) != 0; }
+    bool has(MaterialKind kind) const { return materials.count(kind) != 0; }
+    bool has(PigmentKind kind) const { return pigments.count(kind) != 0; }
+    bool has(CsgOperator op) const { return csgOperators.count(op) != 0; }
+
+    // Every feature the renderer has, with the user SDFs of `scene` (GLSL cannot call a
+    // function it was not given): what the general, unspecialised shader is built for.
+    static SceneFeatures everything(const Scene& scene);
+
+    // A human-readable list, one feature group per line.
+    std::string describe() const;
+};
+
+SceneFeatures analyseFeatures(const Scene& scene);
+
+const char* toString(PrimitiveKind kind);
+const char* toString(MaterialKind kind);
+const char* toString(PigmentKind kind);
+const char* toString(CsgOperator op);
+const char* toString(EnvironmentKind kind);
+
+}  // namespace scene

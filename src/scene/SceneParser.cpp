@@ -1,0 +1,582 @@
+#include "scene/SceneParser.h"
+
+#include "scene/SceneError.h"
+#include "scene/Tokenizer.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace scene {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::set<std::string> kCsgWords = {"union",          "intersection",
+                                         "difference",     "smooth_union",
+                                         "smooth_intersection", "smooth_difference"};
+const std::set<std::string> kTransformWords = {"translate", "rotate", "scale"};
+const std::set<std::string> kPrimitiveWords = {"sphere", "polyhedron", "box",  "torus",
+                                               "cone",   "cylinder",   "disk"};
+const std::set<std::string> kSectionKeywords = {"environment"};
+
+bool isIdentifier(const std::string& word)
+{
+    if (word.empty() || !(std::isalpha(static_cast<unsigned char>(word[0])) || word[0] == '_'))
+        return false;
+    const bool allWordCharacters = std::all_of(word.begin(), word.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    });
+    // GLSL reserves names starting with gl_ and any name containing a double underscore.
+    return allWordCharacters && word.rfind("gl_", 0) != 0 && word.find("__") == std::string::npos;
+}
+
+std::string joinFolders(const std::vector<fs::path>& folders)
+{
+    std::string text;
+    for (const fs::path& folder : folders)
+        text += (text.empty() ? "" : ", ") + folder.string();
+    return text;
+}
+
+// Reads the `// @bound R` and `// @lipschitz L` declarations of a user SDF file.
+void readUserSdfDeclarations(UserSdf& user)
+{
+    std::ifstream file(user.sourcePath);
+    std::string line;
+    while (std::getline(file, line)) {
+        std::istringstream words(line);
+        std::string comment;
+        std::string key;
+        float value = 0.0f;
+        if (!(words >> comment >> key >> value) || comment != "//")
+            continue;
+        if (key == "@bound" && value > 0.0f && std::isfinite(value))
+            user.boundingRadius = value;
+        else if (key == "@lipschitz" && value >= 1.0f && std::isfinite(value))
+            user.lipschitz = value;
+    }
+}
+
+class Parser {
+public:
+    Parser(std::vector<Token> tokens, std::string fileName, const FileLookup& lookup)
+        : tokens_(std::move(tokens)), fileName_(std::move(fileName)), lookup_(lookup)
+    {
+    }
+
+    Scene parse()
+    {
+        Scene scene;
+        parseSectionKeywords(scene);
+        parseCamera(scene.camera);
+        parseSectionKeywords(scene);
+        parsePointLights(scene);
+        parseSectionKeywords(scene);
+        parsePigments(scene);
+        parseSectionKeywords(scene);
+        parseFinishes(scene);
+        parseSectionKeywords(scene);
+        parseObjects(scene);
+        parseSectionKeywords(scene);
+        if (!atEnd())
+            fail("the end of the file (the object count says " +
+                 std::to_string(scene.objects.size()) + " objects)");
+        return scene;
+    }
+
+private:
+    // --- token access -------------------------------------------------------------------
+
+    bool atEnd() const { return position_ >= tokens_.size(); }
+
+    const Token* peek() const { return atEnd() ? nullptr : &tokens_[position_]; }
+
+    const Token& next(const std::string& expected)
+    {
+        if (atEnd())
+            fail(expected);
+        return tokens_[position_++];
+    }
+
+    // Error at the token about to be read (or at the end of the file).
+    [[noreturn]] void fail(const std::string& expected) const
+    {
+        if (atEnd()) {
+            const int line = tokens_.empty() ? 1 : tokens_.back().line;
+            throw SceneError(fileName_, line, "", expected);
+        }
+        failAt(tokens_[position_], expected);
+    }
+
+    [[noreturn]] void failAt(const Token& token, const std::string& expected) const
+    {
+        throw SceneError(fileName_, token.line, token.text, expected);
+    }
+
+    // Error at the token that was at `mark` (a position saved before reading it).
+    [[noreturn]] void failAtMark(std::size_t mark, const std::string& expected) const
+    {
+        if (mark >= tokens_.size()) {
+            const int line = tokens_.empty() ? 1 : tokens_.back().line;
+            throw SceneError(fileName_, line, "", expected);
+        }
+        failAt(tokens_[mark], expected);
+    }
+
+    // --- values -------------------------------------------------------------------------
+
+    float number(const std::string& what)
+    {
+        const std::string expected = "a number (" + what + ")";
+        const Token& token = next(expected);
+        const std::string& text = token.text;
+        const char* first = text.data();
+        const char* last = text.data() + text.size();
+        if (first != last && *first == '+')
+            ++first;
+        float value = 0.0f;
+        const auto [end, error] = std::from_chars(first, last, value);
+        if (error != std::errc() || end != last || !std::isfinite(value))
+            failAt(token, expected);
+        return value;
+    }
+
+    float numberAtLeast(const std::string& what, float minimum)
+    {
+        const std::size_t token = position_;
+        const float value = number(what);
+        if (value < minimum)
+            failAtMark(token, "a number of at least " + formatNumber(minimum) + " (" + what + ")");
+        return value;
+    }
+
+    float positiveNumber(const std::string& what)
+    {
+        const std::size_t token = position_;
+        const float value = number(what);
+        if (!(value > 0.0f))
+            failAtMark(token, "a positive number (" + what + ")");
+        return value;
+    }
+
+    glm::vec3 vector3(const std::string& what)
+    {
+        const float x = number(what + ", x");
+        const float y = number(what + ", y");
+        const float z = number(what + ", z");
+        return {x, y, z};
+    }
+
+    glm::vec3 colour(const std::string& what)
+    {
+        const float r = numberAtLeast(what + ", red", 0.0f);
+        const float g = numberAtLeast(what + ", green", 0.0f);
+        const float b = numberAtLeast(what + ", blue", 0.0f);
+        return {r, g, b};
+    }
+
+    int wholeNumber(const std::string& what)
+    {
+        const std::string expected = "a whole number (" + what + ")";
+        const Token& token = next(expected);
+        int value = 0;
+        const char* last = token.text.data() + token.text.size();
+        const auto [end, error] = std::from_chars(token.text.data(), last, value);
+        if (error != std::errc() || end != last)
+            failAt(token, expected);
+        return value;
+    }
+
+    int count(const std::string& what)
+    {
+        const std::size_t token = position_;
+        const int value = wholeNumber(what);
+        if (value < 0)
+            failAtMark(token, "a count of zero or more (" + what + ")");
+        return value;
+    }
+
+    int index(const std::string& what, std::size_t size)
+    {
+        const std::string expected =
+            size == 0 ? "no " + what + " index: the file defines none"
+                      : "a " + what + " index from 0 to " + std::to_string(size - 1);
+        const Token* token = peek();
+        if (token == nullptr)
+            fail(expected);
+        int value = 0;
+        const char* last = token->text.data() + token->text.size();
+        const auto [end, error] = std::from_chars(token->text.data(), last, value);
+        if (error != std::errc() || end != last || value < 0 ||
+            static_cast<std::size_t>(value) >= size)
+            fail(expected);
+        ++position_;
+        return value;
+    }
+
+    void expectWord(const std::string& word)
+    {
+        const Token& token = next("'" + word + "'");
+        if (token.text != word)
+            failAt(token, "'" + word + "'");
+    }
+
+    static std::string formatNumber(float value)
+    {
+        std::ostringstream stream;
+        stream << value;
+        return stream.str();
+    }
+
+    // --- sections -----------------------------------------------------------------------
+
+    void parseSectionKeywords(Scene& scene)
+    {
+        while (const Token* token = peek()) {
+            if (kSectionKeywords.count(token->text) == 0)
+                return;
+            ++position_;
+            if (token->text == "environment")
+                parseEnvironment(scene.environment);
+        }
+    }
+
+    void parseEnvironment(Environment& environment)
+    {
+        const std::string expected = "an environment: none, sky, or a colour 'r g b'";
+        const Token* token = peek();
+        if (token == nullptr)
+            fail(expected);
+        if (token->text == "none" || token->text == "black") {
+            ++position_;
+            environment = {EnvironmentKind::None, glm::vec3(0.0f)};
+        } else if (token->text == "sky") {
+            ++position_;
+            environment = {EnvironmentKind::Sky, glm::vec3(0.0f)};
+        } else {
+            if (token->text == "constant")
+                ++position_;
+            environment = {EnvironmentKind::Constant, colour("environment radiance")};
+        }
+    }
+
+    void parseCamera(Camera& camera)
+    {
+        camera.eye = vector3("camera eye position");
+        const std::size_t targetToken = position_;
+        camera.target = vector3("camera target point");
+        const std::size_t upToken = position_;
+        camera.up = vector3("camera up vector");
+        const std::size_t fovToken = position_;
+        camera.verticalFieldOfViewDegrees = number("vertical field of view in degrees");
+
+        const glm::vec3 view = camera.target - camera.eye;
+        if (!(glm::length(view) > 0.0f))
+            failAtMark(targetToken, "a camera target different from the eye position");
+        const glm::vec3 forward = glm::normalize(view);
+        const float upLength = glm::length(camera.up);
+        if (!(upLength > 0.0f) ||
+            glm::length(glm::cross(forward, camera.up / upLength)) < 1e-6f)
+            failAtMark(upToken, "a camera up vector that is not zero and not parallel to the "
+                            "view direction");
+        if (!(camera.verticalFieldOfViewDegrees > 0.0f &&
+              camera.verticalFieldOfViewDegrees < 180.0f))
+            failAtMark(fovToken, "a vertical field of view strictly between 0 and 180 degrees");
+    }
+
+    void parsePointLights(Scene& scene)
+    {
+        const int lights = count("number of point lights");
+        for (int i = 0; i < lights; ++i) {
+            const std::string which = "point light " + std::to_string(i + 1) + " of " +
+                                      std::to_string(lights);
+            PointLight light;
+            light.position = vector3(which + " position");
+            light.intensity = colour(which + " intensity");
+            scene.pointLights.push_back(light);
+        }
+    }
+
+    void parsePigments(Scene& scene)
+    {
+        const int pigments = count("number of pigments");
+        for (int i = 0; i < pigments; ++i) {
+            const std::string which =
+                "pigment " + std::to_string(i) + " (" + std::to_string(i + 1) + " of " +
+                std::to_string(pigments) + ")";
+            const Token& kind = next("a pigment kind for " + which + ": solid, checker or texmap");
+            Pigment pigment;
+            pigment.line = kind.line;
+            if (kind.text == "solid") {
+                pigment.kind = PigmentKind::Solid;
+                pigment.color = colour(which + " colour");
+            } else if (kind.text == "checker") {
+                pigment.kind = PigmentKind::Checker;
+                pigment.color = colour(which + " first colour");
+                pigment.secondColor = colour(which + " second colour");
+                pigment.size = positiveNumber(which + " checker size");
+            } else if (kind.text == "texmap") {
+                pigment.kind = PigmentKind::Texture;
+                const Token& file = next("a texture file name for " + which);
+                pigment.textureName = file.text;
+                const auto found = lookup_.findTexture(file.text);
+                if (!found)
+                    failAt(file, "an existing texture file (looked in " +
+                                     joinFolders(lookup_.textureFolders()) + ")");
+                pigment.texturePath = *found;
+                pigment.size = positiveNumber(which + " texture scale");
+            } else {
+                failAt(kind, "a pigment kind for " + which + ": solid, checker or texmap");
+            }
+            scene.pigments.push_back(pigment);
+        }
+    }
+
+    void parseFinishes(Scene& scene)
+    {
+        const int finishes = count("number of finishes");
+        for (int i = 0; i < finishes; ++i) {
+            const std::string which = "finish " + std::to_string(i) + " (" +
+                                      std::to_string(i + 1) + " of " +
+                                      std::to_string(finishes) + ")";
+            Finish finish;
+            finish.emission = colour(which + " emitted radiance");
+            finish.phongExponent = numberAtLeast(which + " Blinn-Phong exponent", 0.0f);
+            finish.reflection = number(which + " kr");
+            finish.transmission = number(which + " kt");
+            const std::size_t iorToken = position_;
+            finish.ior = number(which + " index of refraction");
+            if (finish.transmission > 0.0f && !(finish.ior > 0.0f))
+                failAtMark(iorToken, "a positive index of refraction (" + which +
+                                     " is transmissive)");
+            scene.finishes.push_back(finish);
+        }
+    }
+
+    void parseObjects(Scene& scene)
+    {
+        const int objects = count("number of objects");
+        for (int i = 0; i < objects; ++i) {
+            const std::string which = "object " + std::to_string(i + 1) + " of " +
+                                      std::to_string(objects);
+            SceneObject object;
+            object.line = peek() != nullptr ? peek()->line : 0;
+            object.pigment = index("pigment", scene.pigments.size());
+            object.finish = index("finish", scene.finishes.size());
+            const std::size_t typeToken = position_;
+            object.shape = parseShape(which);
+            const bool emissive = scene.finishes[object.finish].isEmissive();
+            if (emissive && !std::holds_alternative<Sphere>(object.shape.geometry))
+                failAtMark(typeToken, "a sphere: finish " + std::to_string(object.finish) +
+                                       " emits light, and only spheres may emit");
+            scene.objects.push_back(std::move(object));
+        }
+    }
+
+    // --- shapes -------------------------------------------------------------------------
+
+    Shape parseShape(const std::string& which)
+    {
+        const std::string expected =
+            "an object type for " + which +
+            " (sphere, polyhedron, box, torus, cone, cylinder, disk, a CSG operation, a "
+            "transform, or the name of a user SDF)";
+        const Token& type = next(expected);
+        const std::string& word = type.text;
+
+        if (kTransformWords.count(word) != 0)
+            return parseTransformed(type, which);
+        if (kCsgWords.count(word) != 0)
+            return {parseCsg(type, which), std::nullopt};
+        if (word == "sphere") {
+            Sphere sphere;
+            sphere.center = vector3("sphere centre");
+            sphere.radius = numberAtLeast("sphere radius", 0.0f);
+            return {sphere, std::nullopt};
+        }
+        if (word == "polyhedron") {
+            Polyhedron polyhedron;
+            const std::size_t countToken = position_;
+            const int planes = count("number of polyhedron planes");
+            if (planes == 0)
+                failAtMark(countToken, "at least one plane in the polyhedron");
+            for (int j = 0; j < planes; ++j) {
+                const std::string plane =
+                    "plane " + std::to_string(j + 1) + " of " + std::to_string(planes);
+                const std::size_t first = position_;
+                const glm::vec3 normal = vector3(plane + " normal (a b c)");
+                const float offset = number(plane + " offset d");
+                if (!(glm::length(normal) > 0.0f))
+                    failAtMark(first, "a plane normal (a b c) that is not zero");
+                polyhedron.planes.emplace_back(normal, offset);
+            }
+            return {polyhedron, std::nullopt};
+        }
+        if (word == "box") {
+            Box box;
+            box.center = vector3("box centre");
+            box.halfExtents.x = numberAtLeast("box half-extent x", 0.0f);
+            box.halfExtents.y = numberAtLeast("box half-extent y", 0.0f);
+            box.halfExtents.z = numberAtLeast("box half-extent z", 0.0f);
+            return {box, std::nullopt};
+        }
+        if (word == "torus") {
+            Torus torus;
+            torus.center = vector3("torus centre");
+            torus.majorRadius = numberAtLeast("torus major radius", 0.0f);
+            torus.minorRadius = numberAtLeast("torus minor radius", 0.0f);
+            return {torus, std::nullopt};
+        }
+        if (word == "cone") {
+            Cone cone;
+            cone.apex = vector3("cone apex");
+            const std::size_t first = position_;
+            cone.slope.x = number("cone slope a");
+            cone.slope.y = number("cone slope b");
+            if (!(glm::length(cone.slope) > 0.0f))
+                failAtMark(first, "a cone slope (a b) that is not zero");
+            return {cone, std::nullopt};
+        }
+        if (word == "cylinder") {
+            Cylinder cylinder;
+            cylinder.center = vector3("cylinder centre");
+            cylinder.radius = numberAtLeast("cylinder radius", 0.0f);
+            cylinder.halfHeight = numberAtLeast("cylinder half-height", 0.0f);
+            return {cylinder, std::nullopt};
+        }
+        if (word == "disk") {
+            Disk disk;
+            disk.center = vector3("disk centre");
+            const std::size_t first = position_;
+            disk.normal = vector3("disk normal");
+            if (!(glm::length(disk.normal) > 0.0f))
+                failAtMark(first, "a disk normal that is not zero");
+            disk.radius = numberAtLeast("disk radius", 0.0f);
+            return {disk, std::nullopt};
+        }
+        if (word == "{" || word == "}" || !isIdentifier(word))
+            failAt(type, expected);
+
+        UserSdf user;
+        user.name = word;
+        const auto found = lookup_.findUserSdf(word);
+        if (!found)
+            failAt(type, "an object type, or a user SDF with a shader file " + word +
+                             ".glsl (looked in " + joinFolders(lookup_.shaderFolders()) + ")");
+        user.sourcePath = *found;
+        readUserSdfDeclarations(user);
+        user.position = vector3(word + " position");
+        return {user, std::nullopt};
+    }
+
+    Shape parseTransformed(const Token& keyword, const std::string& which)
+    {
+        Transform transform;
+        if (keyword.text == "translate") {
+            transform.translation = vector3("translation");
+        } else if (keyword.text == "rotate") {
+            const std::size_t first = position_;
+            const glm::vec3 axis = vector3("rotation axis");
+            const float degrees = number("rotation angle in degrees");
+            if (!(glm::length(axis) > 0.0f))
+                failAtMark(first, "a rotation axis that is not zero");
+            transform.rotation = glm::mat3(
+                glm::rotate(glm::mat4(1.0f), glm::radians(degrees), glm::normalize(axis)));
+        } else {
+            transform.scale = positiveNumber("uniform scale factor");
+        }
+        Shape inner = parseShape(which);
+        inner.transform = inner.transform ? compose(transform, *inner.transform) : transform;
+        return inner;
+    }
+
+    CsgNode parseCsg(const Token& keyword, const std::string& which)
+    {
+        CsgNode node;
+        const std::string& word = keyword.text;
+        if (word == "union") {
+            node.op = CsgOperator::Union;
+        } else if (word == "intersection") {
+            node.op = CsgOperator::Intersection;
+        } else if (word == "difference") {
+            node.op = CsgOperator::Difference;
+        } else {
+            const Token& mode = next("a smooth-operator kind: exp (sharpness k) or poly (radius)");
+            bool exponential = true;
+            if (mode.text == "exp")
+                exponential = true;
+            else if (mode.text == "poly")
+                exponential = false;
+            else
+                failAt(mode, "a smooth-operator kind: exp (sharpness k) or poly (radius)");
+            if (word == "smooth_union")
+                node.op = exponential ? CsgOperator::SmoothUnion
+                                      : CsgOperator::PolynomialSmoothUnion;
+            else if (word == "smooth_intersection")
+                node.op = exponential ? CsgOperator::SmoothIntersection
+                                      : CsgOperator::PolynomialSmoothIntersection;
+            else
+                node.op = exponential ? CsgOperator::SmoothDifference
+                                      : CsgOperator::PolynomialSmoothDifference;
+            node.parameter = exponential ? positiveNumber("smooth-min sharpness k")
+                                         : numberAtLeast("smooth-min blend radius", 0.0f);
+        }
+        expectWord("{");
+        while (const Token* token = peek()) {
+            if (token->text == "}")
+                break;
+            node.children.push_back(parseShape(which + ", inside '" + word + "'"));
+        }
+        if (atEnd())
+            fail("'}' closing the '" + word + "' opened on line " +
+                 std::to_string(keyword.line));
+        if (node.children.size() < 2)
+            fail( "at least two shapes inside '" + word + "' (opened on line " +
+                                 std::to_string(keyword.line) + ")");
+        ++position_;
+        return node;
+    }
+
+    std::vector<Token> tokens_;
+    std::size_t position_ = 0;
+    std::string fileName_;
+    const FileLookup& lookup_;
+};
+
+}  // namespace
+
+bool isReservedShapeWord(const std::string& word)
+{
+    return kCsgWords.count(word) != 0 || kTransformWords.count(word) != 0 ||
+           kPrimitiveWords.count(word) != 0;
+}
+
+Scene parseSceneText(const std::string& text, const std::string& fileName,
+                     const FileLookup& lookup)
+{
+    Parser parser(tokenize(text), fileName, lookup);
+    Scene scene = parser.parse();
+    scene.sourcePath = fileName;
+    return scene;
+}
+
+Scene parseSceneFile(const fs::path& path)
+{
+    std::ifstream file(path, std::ios::binary);
+    std::error_code error;
+    if (!file || fs::is_directory(path, error))
+        throw std::runtime_error(path.string() + ": cannot read the scene file");
+    std::ostringstream contents;
+    contents << file.rdbuf();
+    return parseSceneText(contents.str(), path.string(), FileLookup::forScene(path));
+}
+
+}  // namespace scene

@@ -1,0 +1,21 @@
+#pragma once
+#include "scene/FileLookup.h"
+#include "scene/Scene.h"
+
+#include <filesystem>
+#include <string>
+
+namespace scene {
+
+// Reads the `.in` scene format (../shared/SCENE_FORMAT.md, docs/SCENE_FORMAT.md): the classic
+// part, and our extensions (comments, `environment`, CSG blocks and transforms). Any error
+// throws SceneError naming the file, line, token and what was expected; nothing is returned
+// half-read.
+Scene parseSceneFile(const std::filesystem::path& path);
+Scene parseSceneText(const std::string& text, const std::string& fileName,
+                     const FileLookup& lookup);
+
+// Words that have a meaning in the object-type slot and so cannot name a user SDF.
+bool isReservedShapeWord(const std::string& word);
+
+}  // namespace scene
