@@ -6,7 +6,11 @@
 uniform int uMaxBounces;          // scattering events after the camera ray (the seed: 16)
 uniform int uRussianRouletteDepth;  // scattering events that roulette never ends (the seed: 4)
 
-Surface surfaceAt(int object, vec3 p, vec3 normal, vec3 wo, float footprint, float tolerance)
+// Smallest cosine between wo and the facing normal (see Surface.facingNormal).
+const float kMinimumViewCosine = 1e-4;
+
+Surface surfaceAt(int object, vec3 p, vec3 normal, vec3 wo, float insideSign, float footprint,
+                  float tolerance)
 {
     ivec4 record = uObjects[object];
     vec4 finishA = uFinishes[2 * record.y];
@@ -14,7 +18,12 @@ Surface surfaceAt(int object, vec3 p, vec3 normal, vec3 wo, float footprint, flo
     Surface s;
     s.position = p;
     s.normal = normal;
-    s.facingNormal = dot(normal, wo) >= 0.0 ? normal : -normal;
+    s.entering = insideSign > 0.0;
+    vec3 facing = insideSign * normal;
+    float cosView = dot(facing, wo);
+    if (cosView < kMinimumViewCosine)
+        facing = normalize(facing + (kMinimumViewCosine - cosView) * wo);
+    s.facingNormal = facing;
     s.color = pigmentColor(record.x, p, normal, footprint, tolerance);
     s.emission = finishA.rgb;
     s.phongExponent = finishA.w;
@@ -50,14 +59,20 @@ vec3 tracePath(vec2 filmPoint)
         vec3 normal = objectNormal(hit.object, marched, tolerance);
         if (normal == vec3(0.0))
             normal = -direction;
-        // One Newton step onto the surface: the march stopped within `tolerance` of it.
-        vec3 p = marched - normal * hit.sceneDistance;
+        // The march stopped within `tolerance` of the surface. One Newton step along the
+        // ray (free: distance and normal are known) puts the point where this ray meets the
+        // surface, exactly for planes; at grazing incidence, where that step is unstable, the
+        // point is projected along the normal instead.
+        float cosIncidence = abs(dot(direction, normal));
+        vec3 p = abs(hit.sceneDistance) < 4.0 * tolerance * cosIncidence
+                     ? marched + direction * (insideSign * hit.sceneDistance / cosIncidence)
+                     : marched - normal * hit.sceneDistance;
         vec3 wo = -direction;
-        Surface s = surfaceAt(hit.object, p, normal, wo, footprint, tolerance);
+        Surface s = surfaceAt(hit.object, p, normal, wo, insideSign, footprint, tolerance);
 
 #if HAS_SPHERE_LIGHTS
         // Emission, seen from outside the sphere.
-        if (s.lightIndex >= 0 && dot(normal, wo) > 0.0) {
+        if (s.lightIndex >= 0 && s.entering) {
             float weight = 1.0;
             if (!previousWasDelta)
                 weight = uUseMis != 0
@@ -79,6 +94,8 @@ vec3 tracePath(vec2 filmPoint)
         throughput *= scattered.weight;
         previousWasDelta = scattered.isDelta;
         previousPdf = scattered.pdf;
+        // Light sampling measured its cone from the surface point; MIS weighs the same pdfs.
+        previousPosition = p;
 
         // Past the first scattering events, end dim paths at random and reweight the
         // survivors: unbiased, and no throughput clamp undoes it.
@@ -94,8 +111,6 @@ vec3 tracePath(vec2 filmPoint)
         cone = RayCone(footprint, scattered.isDelta ? cone.spread : 0.0);
         float side = dot(scattered.direction, normal) >= 0.0 ? 1.0 : -1.0;
         origin = p + normal * (side * 2.0 * tolerance);
-        // Light sampling measured its cone from this same point, so MIS weighs the same pdfs.
-        previousPosition = origin;
         direction = scattered.direction;
         insideSign = sceneDistance(origin) < 0.0 ? -1.0 : 1.0;
     }

@@ -9,6 +9,7 @@ float lightRadius(int light) { return uLights[3 * light].w; }
 vec3 lightEmission(int light) { return uLights[3 * light + 1].rgb; }
 float lightSelectionProbability(int light) { return uLights[3 * light + 1].w; }
 bool isPointLight(int light) { return uLights[3 * light + 2].y < 0.0; }
+int lightObject(int light) { return int(uLights[3 * light + 2].y); }
 
 int selectLight(float u)
 {
@@ -64,19 +65,23 @@ vec3 directLighting(Surface s, vec3 wo, float tolerance, float insideSign)
     float selection = lightSelectionProbability(light);
     if (!(selection > 0.0))
         return vec3(0.0);
-    vec3 origin = s.position + s.facingNormal * (2.0 * tolerance);
+    // Geometry is measured from the surface point; only the shadow ray starts off the
+    // surface, far enough not to hit it again.
+    vec3 p = s.position;
+    float offset = 2.0 * tolerance;
+    vec3 shadowOrigin = p + s.facingNormal * offset;
 
 #if HAS_POINT_LIGHTS
     if (isPointLight(light)) {
-        vec3 toLight = lightPosition(light) - origin;
+        vec3 toLight = lightPosition(light) - p;
         float distance = length(toLight);
         vec3 wi = toLight / distance;
         float cosI = dot(s.facingNormal, wi);
-        if (cosI <= 0.0 || distance <= tolerance)
+        if (cosI <= 0.0 || distance <= offset)
             return vec3(0.0);
         vec3 f = bsdfEvaluate(s, wo, wi);
         if (maxComponent(f) <= 0.0 ||
-            !unoccluded(origin, wi, distance - tolerance, insideSign, tolerance))
+            !unoccluded(shadowOrigin, wi, distance - offset, insideSign, tolerance, -1))
             return vec3(0.0);
         return f * cosI * lightEmission(light) / (distance * distance * selection);
     }
@@ -84,9 +89,9 @@ vec3 directLighting(Surface s, vec3 wo, float tolerance, float insideSign)
 
 #if HAS_SPHERE_LIGHTS
     float oneMinusCosThetaMax;
-    if (!sphereLightCone(origin, light, oneMinusCosThetaMax))
+    if (!sphereLightCone(p, light, oneMinusCosThetaMax))
         return vec3(0.0);
-    vec3 axis = normalize(lightPosition(light) - origin);
+    vec3 axis = normalize(lightPosition(light) - p);
     vec3 wi = basisAround(axis) * sampleUniformCone(random2(), oneMinusCosThetaMax);
     float cosI = dot(s.facingNormal, wi);
     if (cosI <= 0.0)
@@ -94,9 +99,8 @@ vec3 directLighting(Surface s, vec3 wo, float tolerance, float insideSign)
     vec3 f = bsdfEvaluate(s, wo, wi);
     if (maxComponent(f) <= 0.0)
         return vec3(0.0);
-    float distance = distanceToSphereLight(origin, wi, light);
-    // Stop short of the light's own surface, which is part of the scene it is traced in.
-    if (!unoccluded(origin, wi, distance - 2.0 * tolerance, insideSign, tolerance))
+    float distance = distanceToSphereLight(p, wi, light);
+    if (!unoccluded(shadowOrigin, wi, distance, insideSign, tolerance, lightObject(light)))
         return vec3(0.0);
     float lightPdf = selection * uniformConePdf(oneMinusCosThetaMax);
     float weight = uUseMis != 0 ? powerHeuristic(lightPdf, bsdfPdf(s, wo, wi)) : 1.0;

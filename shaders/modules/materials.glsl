@@ -5,7 +5,12 @@
 struct Surface {
     vec3 position;
     vec3 normal;         // outward normal of the object
-    vec3 facingNormal;   // the normal turned towards wo (opaque materials shade with it)
+    // The normal on the side the ray arrived from, tilted if need be so that wo is above
+    // it: a ray that grazes a silhouette within the hit tolerance, without crossing it,
+    // then reflects onwards (as a true near miss would continue) instead of scattering into
+    // the solid it never entered.
+    vec3 facingNormal;
+    bool entering;       // the ray arrived from outside the solid
     vec3 color;          // the pigment at this point
     vec3 emission;
     int material;
@@ -146,12 +151,10 @@ BsdfSample mirrorSample(Surface s, vec3 wo)
 #if HAS_DIELECTRIC
 BsdfSample dielectricSample(Surface s, vec3 wo)
 {
-    float cosO = dot(s.normal, wo);
-    bool entering = cosO > 0.0;
-    float etaOutgoingSide = entering ? 1.0 : s.ior;
-    float etaOtherSide = entering ? s.ior : 1.0;
-    vec3 n = entering ? s.normal : -s.normal;
-    float cosIncident = abs(cosO);
+    float etaOutgoingSide = s.entering ? 1.0 : s.ior;
+    float etaOtherSide = s.entering ? s.ior : 1.0;
+    vec3 n = s.facingNormal;
+    float cosIncident = dot(n, wo);
 
     float cosTransmitted;
     float reflectance = dielectricReflectance(cosIncident, etaOutgoingSide, etaOtherSide,

@@ -81,18 +81,27 @@ MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone
     return best;
 }
 
-// True when nothing lies between `origin` and `maxDistance` along `direction`. A spent step
-// budget counts as blocked, for the same reason as above.
+// True when nothing lies between `origin` and `maxDistance` along `direction`. When the
+// segment ends on an object (a sphere light), pass its index as `target`: arriving within
+// the tolerance of the target counts as reaching it. (Marching on to the target's surface
+// itself would crawl for ever on the rays that meet it at grazing angles and be taken for
+// occlusion.) A spent step budget counts as blocked, for the same reason as above.
 bool unoccluded(vec3 origin, vec3 direction, float maxDistance, float insideSign,
-                float tolerance)
+                float tolerance, int target)
 {
     float t = 0.0;
     for (int step = 0; step < uMaxMarchSteps; ++step) {
         if (t >= maxDistance)
             return true;
-        float radius = insideSign * sceneDistance(origin + t * direction);
-        if (radius < tolerance)
-            return false;
+        vec3 p = origin + t * direction;
+        float radius = insideSign * sceneDistance(p);
+        if (radius < tolerance) {
+            if (target < 0)
+                return false;
+            int nearest;
+            sceneDistanceAndObject(p, nearest);
+            return nearest == target;
+        }
         t += radius;
     }
     return false;
