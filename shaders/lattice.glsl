@@ -16,23 +16,30 @@ float lattice(vec3 p, vec3 x)
 {
     vec3 q = p - x;
     // Turned 63 degrees about y, then about z, so no bond points at the camera.
-    float c = cos(0.35 * PI);
-    float s = sin(0.35 * PI);
-    q.xz = mat2(c, -s, s, c) * q.xz;
-    q.xy = mat2(c, -s, s, c) * q.xy;
+    const float cosine = cos(0.35 * PI);
+    const float sine = sin(0.35 * PI);
+    const mat2 turn = mat2(cosine, -sine, sine, cosine);
+    q.xz = turn * q.xz;
+    q.xy = turn * q.xy;
 
     const float atomRadius = 0.5;
     const float bondRadius = 0.175;
     const float blend = 0.35;
-    // A regular tetrahedron with its centre at the origin, atoms 1.3 from the centre.
+    // A regular tetrahedron with its centre at the origin, atoms 1.3 from the centre. Written
+    // out rather than looped over an array: software rasterisers run local arrays slowly.
     const float e = 1.3 / 1.7320508;
-    vec3 atoms[4] = vec3[4](vec3(e, e, e), vec3(e, -e, -e), vec3(-e, e, -e), vec3(-e, -e, e));
+    const vec3 a = vec3(e, e, e);
+    const vec3 b = vec3(e, -e, -e);
+    const vec3 c = vec3(-e, e, -e);
+    const vec3 d = vec3(-e, -e, e);
 
-    float d = FLOAT_MAX;
-    for (int i = 0; i < 4; ++i)
-        d = min(d, sdSphere(q - atoms[i], atomRadius));
-    for (int i = 0; i < 4; ++i)
-        for (int j = i + 1; j < 4; ++j)
-            d = opSmoothUnionPoly(d, latticeBond(q, atoms[i], atoms[j], bondRadius), blend);
-    return d;
+    float atoms = min(min(sdSphere(q - a, atomRadius), sdSphere(q - b, atomRadius)),
+                      min(sdSphere(q - c, atomRadius), sdSphere(q - d, atomRadius)));
+    float result = opSmoothUnionPoly(atoms, latticeBond(q, a, b, bondRadius), blend);
+    result = opSmoothUnionPoly(result, latticeBond(q, a, c, bondRadius), blend);
+    result = opSmoothUnionPoly(result, latticeBond(q, a, d, bondRadius), blend);
+    result = opSmoothUnionPoly(result, latticeBond(q, b, c, bondRadius), blend);
+    result = opSmoothUnionPoly(result, latticeBond(q, b, d, bondRadius), blend);
+    result = opSmoothUnionPoly(result, latticeBond(q, c, d, bondRadius), blend);
+    return result;
 }

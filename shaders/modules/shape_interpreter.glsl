@@ -11,6 +11,15 @@
 //   END        the object's distance is on the stack
 
 uniform ivec4 uShapeProgram[SHAPE_PROGRAM_ARRAY_SIZE];
+// Per object, a bounding sphere (centre, radius) for expensive shapes, radius < 0 for none:
+// the object is skipped where its sphere is no nearer than what is already known.
+uniform vec4 uObjectBounds[OBJECT_ARRAY_SIZE];
+
+bool mayBeNearer(int object, vec3 p, float known)
+{
+    vec4 bound = uObjectBounds[object];
+    return bound.w < 0.0 || sdSphere(p - bound.xyz, bound.w) < known;
+}
 
 const int OPCODE_END = 0;
 const int OPCODE_PRIMITIVE = 1;
@@ -83,12 +92,20 @@ float combine(int op, float a, float b, float parameter)
     return opSmoothDifferencePoly(a, b, parameter);
 }
 
+// Leaving a frame maps the point back by the forward transform instead of keeping a stack
+// of points: local arrays indexed at run time are slow on software rasterisers.
+vec3 toParentPoint(vec3 local, int first)
+{
+    vec4 translationAndScale = uShapeParameters[first + 3];
+    mat3 rotation = mat3(uShapeParameters[first].xyz, uShapeParameters[first + 1].xyz,
+                         uShapeParameters[first + 2].xyz);
+    return rotation * (translationAndScale.w * local) + translationAndScale.xyz;
+}
+
 float runShapeProgram(int start, vec3 p)
 {
     float distances[SHAPE_STACK_DEPTH];
-    vec3 frames[SHAPE_STACK_DEPTH];
     int distanceCount = 0;
-    int frameCount = 0;
     vec3 point = p;
     for (int pc = start; pc < SHAPE_PROGRAM_ARRAY_SIZE; ++pc) {
         ivec4 instruction = uShapeProgram[pc];
@@ -98,10 +115,9 @@ float runShapeProgram(int start, vec3 p)
             distances[distanceCount++] =
                 primitiveDistance(instruction.y, instruction.z, instruction.w, point);
         } else if (instruction.x == OPCODE_PUSH_FRAME) {
-            frames[frameCount++] = point;
             point = toLocalPoint(point, instruction.y);
         } else if (instruction.x == OPCODE_POP_FRAME) {
-            point = frames[--frameCount];
+            point = toParentPoint(point, instruction.y);
             distances[distanceCount - 1] =
                 toWorldDistance(distances[distanceCount - 1], instruction.y);
         } else {
@@ -120,14 +136,20 @@ float runShapeProgram(int start, vec3 p)
 
 float objectDistance(int object, vec3 p)
 {
-    return runShapeProgram(uObjects[object].w, p);
+    int start = uObjects[object].w;
+    ivec4 first = uShapeProgram[start];
+    // Most objects are one primitive: evaluate it directly, without the interpreter's stack.
+    if (first.x == OPCODE_PRIMITIVE && uShapeProgram[start + 1].x == OPCODE_END)
+        return primitiveDistance(first.y, first.z, first.w, p);
+    return runShapeProgram(start, p);
 }
 
 float sceneDistance(vec3 p)
 {
     float d = FLOAT_MAX;
     for (int object = 0; object < OBJECT_COUNT; ++object)
-        d = min(d, objectDistance(object, p));
+        if (mayBeNearer(object, p, d))
+            d = min(d, objectDistance(object, p));
     return d;
 }
 
@@ -136,6 +158,8 @@ float sceneDistanceAndObject(vec3 p, out int nearest)
     float d = FLOAT_MAX;
     nearest = -1;
     for (int object = 0; object < OBJECT_COUNT; ++object) {
+        if (!mayBeNearer(object, p, d))
+            continue;
         float candidate = objectDistance(object, p);
         if (candidate < d) {
             d = candidate;

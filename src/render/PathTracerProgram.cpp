@@ -29,7 +29,7 @@ ShaderSource assemblePathTracerSource(const SceneShaderCode& code, const fs::pat
     source.add("<preamble: features of the scene>", kVersion + code.defines);
     auto module = [&](const char* name) { source.addFile(modules / name, shaderDirectory); };
 
-    const bool specialized = code.variant == ShaderVariant::Specialized;
+    const bool specialized = specializesShapes(code.variant);
     module("constants.glsl");
     module("rng.glsl");
     module("sampling.glsl");

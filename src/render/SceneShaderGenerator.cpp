@@ -1,5 +1,7 @@
 #include "render/SceneShaderGenerator.h"
 
+#include "scene/SceneBounds.h"
+
 #include <algorithm>
 #include <map>
 #include <sstream>
@@ -106,6 +108,11 @@ public:
     }
 
     std::string functions() const { return functions_.str(); }
+
+    int allocateBound(const ShapeBound& bound)
+    {
+        return allocate({glm::vec4(bound.center, bound.radius)});
+    }
     int maxStackDepth() const { return maxDepth_; }
     const std::map<std::string, int>& userSdfIds() const { return userIds_; }
 
@@ -257,31 +264,71 @@ void define(std::ostringstream& out, const std::string& name, int value)
     out << "#define " << name << " " << value << "\n";
 }
 
+// Objects whose distance is expensive (user SDFs, CSG solids) and that have a bounding
+// sphere are evaluated only where that sphere is nearer than everything known so far: the
+// exact distance is never below the sphere's, so the skipped evaluation could not have been
+// the minimum. Nothing is approximated.
+bool worthBounding(const SceneObject& object)
+{
+    return std::holds_alternative<UserSdf>(object.shape.geometry) ||
+           std::holds_alternative<CsgNode>(object.shape.geometry);
+}
+
 std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compiler)
 {
-    std::vector<std::string> objects;
-    for (const SceneObject& object : scene.objects)
-        objects.push_back(compiler.emitFunction(object.shape));
+    struct Entry {
+        std::size_t index;
+        std::string function;
+        int boundSlot;  // -1: evaluated everywhere
+    };
+    std::vector<Entry> cheap;
+    std::vector<Entry> bounded;
+    std::vector<std::string> functions;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        Entry entry{i, compiler.emitFunction(object.shape), -1};
+        functions.push_back(entry.function);
+        const ShapeBound bound = boundShape(object.shape);
+        if (worthBounding(object) && bound.finite) {
+            entry.boundSlot = compiler.allocateBound(bound);
+            bounded.push_back(entry);
+        } else {
+            cheap.push_back(entry);
+        }
+    }
+    auto boundTest = [](int boundSlot) {
+        return "sdSphere(p - " + slot(boundSlot) + ".xyz, " + slot(boundSlot) + ".w) < d";
+    };
 
     std::ostringstream out;
     out << compiler.functions();
     out << "// The scene: the union of its objects, each the object's own shape function.\n\n";
     out << "float objectDistance(int object, vec3 p)\n{\n";
     out << "    switch (object) {\n";
-    for (std::size_t i = 0; i < objects.size(); ++i)
-        out << "    case " << i << ": return " << objects[i] << "(p);\n";
+    for (std::size_t i = 0; i < functions.size(); ++i)
+        out << "    case " << i << ": return " << functions[i] << "(p);\n";
     out << "    }\n    return FLOAT_MAX;\n}\n\n";
 
+    out << "// Cheap objects first, so that bounded expensive ones are skipped as often as "
+           "possible.\n";
     out << "float sceneDistance(vec3 p)\n{\n    float d = FLOAT_MAX;\n";
-    for (const std::string& object : objects)
-        out << "    d = min(d, " << object << "(p));\n";
+    for (const Entry& entry : cheap)
+        out << "    d = min(d, " << entry.function << "(p));\n";
+    for (const Entry& entry : bounded)
+        out << "    if (" << boundTest(entry.boundSlot) << ")\n        d = min(d, "
+            << entry.function << "(p));\n";
     out << "    return d;\n}\n\n";
 
     out << "float sceneDistanceAndObject(vec3 p, out int nearest)\n{\n";
     out << "    float d = FLOAT_MAX;\n    nearest = -1;\n    float candidate;\n";
-    for (std::size_t i = 0; i < objects.size(); ++i)
-        out << "    candidate = " << objects[i] << "(p);\n"
-            << "    if (candidate < d) { d = candidate; nearest = " << i << "; }\n";
+    for (const Entry& entry : cheap)
+        out << "    candidate = " << entry.function << "(p);\n"
+            << "    if (candidate < d) { d = candidate; nearest = " << entry.index << "; }\n";
+    for (const Entry& entry : bounded)
+        out << "    if (" << boundTest(entry.boundSlot) << ") {\n"
+            << "        candidate = " << entry.function << "(p);\n"
+            << "        if (candidate < d) { d = candidate; nearest = " << entry.index
+            << "; }\n    }\n";
     out << "    return d;\n}\n";
     return out.str();
 }
@@ -299,12 +346,26 @@ std::string userSdfDispatcher(const std::map<std::string, int>& ids)
 
 }  // namespace
 
+bool specializesFeatures(ShaderVariant variant)
+{
+    return variant == ShaderVariant::Specialized || variant == ShaderVariant::FeaturesOnly;
+}
+
+bool specializesShapes(ShaderVariant variant)
+{
+    return variant == ShaderVariant::Specialized || variant == ShaderVariant::ShapesOnly;
+}
+
 SceneShaderCode generateSceneShaderCode(const Scene& scene, ShaderVariant variant)
 {
     SceneShaderCode code;
     code.variant = variant;
-    const bool specialized = variant == ShaderVariant::Specialized;
-    code.features = specialized ? analyseFeatures(scene) : SceneFeatures::everything(scene);
+    const bool specialized = specializesShapes(variant);
+    code.features = specializesFeatures(variant) ? analyseFeatures(scene)
+                                                 : SceneFeatures::everything(scene);
+    if (!specialized)
+        // The interpreter reads transforms whether or not this scene has any.
+        code.features.transforms = true;
     for (const auto& [name, path] : code.features.userSdfs)
         code.userSdfFiles.push_back(path);
 
@@ -316,6 +377,10 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, ShaderVariant varian
             code.objectProgramStart.push_back(static_cast<int>(code.shapeProgram.size()));
             compiler.emitProgram(object.shape, 0);
             code.shapeProgram.emplace_back(kEnd, 0, 0, 0);
+            const ShapeBound bound = boundShape(object.shape);
+            code.objectBounds.push_back(worthBounding(object) && bound.finite
+                                            ? glm::vec4(bound.center, bound.radius)
+                                            : glm::vec4(0.0f, 0.0f, 0.0f, -1.0f));
         }
         // Declared before the interpreter module, which calls it.
         code.sceneFunctions = userSdfDispatcher(compiler.userSdfIds());
@@ -325,7 +390,7 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, ShaderVariant varian
     const int lightCount =
         static_cast<int>(scene.pointLights.size() + sphereLights(scene).size());
     std::ostringstream out;
-    define(out, "SHADER_SPECIALIZED", specialized ? 1 : 0);
+    define(out, "SHADER_SPECIALIZED_SHAPES", specialized ? 1 : 0);
     define(out, "OBJECT_COUNT", static_cast<int>(scene.objects.size()));
     define(out, "OBJECT_ARRAY_SIZE", std::max<int>(1, scene.objects.size()));
     define(out, "SHAPE_PARAMETER_ARRAY_SIZE", std::max<int>(1, code.shapeParameters.size()));
@@ -346,7 +411,7 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, ShaderVariant varian
     define(out, "HAS_POINT_LIGHTS", f.pointLights ? 1 : 0);
     define(out, "HAS_SPHERE_LIGHTS", f.sphereLights ? 1 : 0);
     out << "#define ENVIRONMENT_KIND_FROM_UNIFORM (-1)\n";
-    if (specialized)
+    if (specializesFeatures(variant))
         define(out, "ENVIRONMENT_KIND", static_cast<int>(f.environment));
     else
         out << "#define ENVIRONMENT_KIND ENVIRONMENT_KIND_FROM_UNIFORM\n";

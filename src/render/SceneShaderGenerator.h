@@ -16,7 +16,15 @@ enum class ShaderVariant {
     Specialized,
     // Every feature, and the shapes interpreted from uniforms (`--no-specialize`).
     General,
+    // The two halves of specialisation on their own, so that benchmarks can tell what
+    // each one buys: only the features the scene uses but shapes interpreted, and every
+    // feature but shapes generated.
+    FeaturesOnly,
+    ShapesOnly,
 };
+
+bool specializesFeatures(ShaderVariant variant);
+bool specializesShapes(ShaderVariant variant);
 
 // The scene-dependent part of the path-tracing shader: the #defines that switch modules on
 // and size the uniform arrays, the distance functions of the scene, and the shape
@@ -33,6 +41,7 @@ struct SceneShaderCode {
     std::vector<glm::vec4> shapeParameters;
     std::vector<glm::ivec4> shapeProgram;  // General only
     std::vector<int> objectProgramStart;   // General only: per object
+    std::vector<glm::vec4> objectBounds;   // General only: per object, radius < 0 for none
 };
 
 SceneShaderCode generateSceneShaderCode(const scene::Scene& scene, ShaderVariant variant);

@@ -161,6 +161,7 @@ void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
 {
     setArray(program, "uShapeParameters", code.shapeParameters);
     setArray(program, "uShapeProgram", code.shapeProgram);
+    setArray(program, "uObjectBounds", code.objectBounds);
     setArray(program, "uObjects", uniforms.objects);
     setArray(program, "uPigments", uniforms.pigments);
     setArray(program, "uFinishes", uniforms.finishes);
