@@ -46,7 +46,10 @@ vec3 tracePath(vec2 filmPoint)
     float previousPdf = 0.0;
     vec3 previousPosition = origin;
 
-    for (int scattering = 0; scattering <= uMaxBounces; ++scattering) {
+    int scattering = 0;
+    int nullCrossings = 0;
+    const int kMaxNullCrossings = 32;
+    for (int segment = 0; segment <= uMaxBounces + kMaxNullCrossings; ++segment) {
         MarchHit hit = sphereTrace(origin, direction, insideSign, cone);
         if (!hit.found) {
             radiance += throughput * environmentRadiance(direction);
@@ -82,8 +85,20 @@ vec3 tracePath(vec2 filmPoint)
             radiance += throughput * s.emission * weight;
         }
 #endif
+#if HAS_NULL_INTERFACES
+        if (isNullInterface(hit.object) && nullCrossings < kMaxNullCrossings) {
+            // No interface, no scattering event: the ray goes on unbent, tinted.
+            throughput *= s.color;
+            ++nullCrossings;
+            origin = p - s.facingNormal * (2.0 * tolerance);
+            insideSign = sceneDistance(origin) < 0.0 ? -1.0 : 1.0;
+            cone = RayCone(footprint, cone.spread);
+            continue;
+        }
+#endif
         if (scattering == uMaxBounces)
             break;
+        ++scattering;
 
         if (!isDeltaMaterial(s.material))
             radiance += throughput * directLighting(s, wo, tolerance, insideSign);
@@ -99,7 +114,7 @@ vec3 tracePath(vec2 filmPoint)
 
         // Past the first scattering events, end dim paths at random and reweight the
         // survivors: unbiased, and no throughput clamp undoes it.
-        if (scattering + 1 > uRussianRouletteDepth) {
+        if (scattering > uRussianRouletteDepth) {
             float survival = min(1.0, maxComponent(throughput));
             if (!(random01() < survival))
                 break;

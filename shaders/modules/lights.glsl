@@ -53,6 +53,56 @@ float distanceToSphereLight(vec3 p, vec3 direction, int light)
     return c / (b + sqrt(discriminant));
 }
 
+// An object that refracts nothing: a dielectric of index exactly 1, between equal media.
+// It has no interface, so light passes it unbent, tinted by its pigment.
+bool isNullInterface(int object)
+{
+    ivec4 record = uObjects[object];
+    vec4 finish = uFinishes[2 * record.y + 1];
+    return int(finish.x) == MATERIAL_DIELECTRIC && finish.y == 1.0;
+}
+
+// The fraction of light that travels from `origin` along `direction` over `maxDistance`:
+// zero when something blocks it, one when nothing does, the tint of any index-1 dielectric
+// it passes through. When the segment ends on an object (a sphere light), pass its index as
+// `target`: arriving within the tolerance of the target counts as reaching it. (Marching on
+// to the target's surface itself would crawl for ever on rays that meet it at grazing
+// angles, and be taken for occlusion.) A spent step budget counts as blocked, as a
+// spent budget counts as a hit for camera and path rays.
+vec3 shadowTransmittance(vec3 origin, vec3 direction, float maxDistance, float insideSign,
+                         float tolerance, int target)
+{
+    vec3 transmittance = vec3(1.0);
+    float t = 0.0;
+    for (int step = 0; step < uMaxMarchSteps; ++step) {
+        if (t >= maxDistance)
+            return transmittance;
+        vec3 p = origin + t * direction;
+        float radius = insideSign * sceneDistance(p);
+        if (radius < tolerance) {
+#if HAS_NULL_INTERFACES || HAS_SPHERE_LIGHTS
+            int nearest;
+            sceneDistanceAndObject(p, nearest);
+            if (nearest == target)
+                return transmittance;
+#endif
+#if HAS_NULL_INTERFACES
+            if (nearest >= 0 && isNullInterface(nearest)) {
+                transmittance *= pigmentColor(uObjects[nearest].x, p, -direction, 0.0, tolerance);
+                // Step through the surface; where the step only grazed it, the march goes
+                // on from outside and crosses further along.
+                t += 2.0 * tolerance;
+                insideSign = sceneDistance(origin + t * direction) < 0.0 ? -1.0 : 1.0;
+                continue;
+            }
+#endif
+            return vec3(0.0);
+        }
+        t += radius * uStepScale;
+    }
+    return vec3(0.0);
+}
+
 // Next-event estimation at a non-delta surface: radiance arriving from one chosen light
 // through `wo`'s side, times the BSDF and cosine, divided by the sampling densities.
 // `insideSign` is the side of the solid the incoming ray travelled in.
@@ -80,10 +130,12 @@ vec3 directLighting(Surface s, vec3 wo, float tolerance, float insideSign)
         if (cosI <= 0.0 || distance <= offset)
             return vec3(0.0);
         vec3 f = bsdfEvaluate(s, wo, wi);
-        if (maxComponent(f) <= 0.0 ||
-            !unoccluded(shadowOrigin, wi, distance - offset, insideSign, tolerance, -1))
+        if (maxComponent(f) <= 0.0)
             return vec3(0.0);
-        return f * cosI * lightEmission(light) / (distance * distance * selection);
+        vec3 transmittance =
+            shadowTransmittance(shadowOrigin, wi, distance - offset, insideSign, tolerance, -1);
+        return f * cosI * transmittance * lightEmission(light) /
+               (distance * distance * selection);
     }
 #endif
 
@@ -100,11 +152,13 @@ vec3 directLighting(Surface s, vec3 wo, float tolerance, float insideSign)
     if (maxComponent(f) <= 0.0)
         return vec3(0.0);
     float distance = distanceToSphereLight(p, wi, light);
-    if (!unoccluded(shadowOrigin, wi, distance, insideSign, tolerance, lightObject(light)))
+    vec3 transmittance = shadowTransmittance(shadowOrigin, wi, distance, insideSign, tolerance,
+                                             lightObject(light));
+    if (maxComponent(transmittance) <= 0.0)
         return vec3(0.0);
     float lightPdf = selection * uniformConePdf(oneMinusCosThetaMax);
     float weight = uUseMis != 0 ? powerHeuristic(lightPdf, bsdfPdf(s, wo, wi)) : 1.0;
-    return f * cosI * lightEmission(light) * (weight / lightPdf);
+    return f * cosI * transmittance * lightEmission(light) * (weight / lightPdf);
 #else
     return vec3(0.0);
 #endif

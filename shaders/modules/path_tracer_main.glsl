@@ -11,6 +11,7 @@
 uniform sampler2D uPreviousEstimate;   // rgb: mean radiance, a: samples accumulated
 uniform sampler2D uPreviousMoments;    // rgb: sum of squared deviations, a: samples discarded
 uniform usampler2D uPreviousRandomState;
+uniform int uSamplesPerFrame;
 
 layout(location = 0) out vec4 outEstimate;
 layout(location = 1) out vec4 outMoments;
@@ -28,17 +29,18 @@ void main()
     vec4 moments = texelFetch(uPreviousMoments, pixel, 0);
     rngState = texelFetch(uPreviousRandomState, pixel, 0);
 
-    // A uniformly random point inside the pixel: box-filtered anti-aliasing.
-    vec3 value = tracePath(vec2(pixel) + random2());
-
-    if (isValidSample(value)) {
-        float count = estimate.a + 1.0;
-        vec3 deviation = value - estimate.rgb;
-        estimate.rgb += deviation / count;
-        moments.rgb += deviation * (value - estimate.rgb);
-        estimate.a = count;
-    } else {
-        moments.a += 1.0;
+    for (int i = 0; i < uSamplesPerFrame; ++i) {
+        // A uniformly random point inside the pixel: box-filtered anti-aliasing.
+        vec3 value = tracePath(vec2(pixel) + random2());
+        if (isValidSample(value)) {
+            float count = estimate.a + 1.0;
+            vec3 deviation = value - estimate.rgb;
+            estimate.rgb += deviation / count;
+            moments.rgb += deviation * (value - estimate.rgb);
+            estimate.a = count;
+        } else {
+            moments.a += 1.0;
+        }
     }
     outEstimate = estimate;
     outMoments = moments;

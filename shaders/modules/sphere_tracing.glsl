@@ -12,6 +12,7 @@ uniform float uMinimumHitDistance;  // world units, from the scene's bounds
 uniform float uFarDistance;         // world units, from the scene's bounds
 uniform int uMaxMarchSteps;
 uniform float uOverRelaxation;      // Keinert's omega; 1 is plain sphere tracing
+uniform float uStepScale;           // at most 1: shorter steps for overestimating SDFs
 
 // A ray's footprint: `width` at its origin, growing by `spread` per unit of distance.
 struct RayCone {
@@ -60,7 +61,7 @@ MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone
             stepLength -= omega * stepLength;
             omega = 1.0;
         } else {
-            stepLength = signedRadius * omega;
+            stepLength = signedRadius * omega * uStepScale;
             float tolerance = hitTolerance(cone, t);
             if (radius < tolerance)
                 return MarchHit(true, t, distance, object);
@@ -75,36 +76,14 @@ MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone
             return MarchHit(false, t, distance, -1);
         t += stepLength;
     }
-    // The step budget ran out before the ray escaped: it is creeping along a surface
-    // (grazing) or squeezing through a narrow gap. Taking the closest approach as the hit
-    // keeps a closed room closed; returning "no hit" would let the sky leak in.
+    // The step budget ran out before the ray escaped. If it came within a few tolerances of
+    // a surface it is creeping along it (grazing) or squeezing through a narrow gap, where the
+    // pixel's cone overlaps that surface anyway: the closest approach is taken as the hit,
+    // which keeps a closed room closed (returning "no hit" would let the sky leak in). A ray
+    // that stayed far from everything was escaping and sees the environment.
+    const float kCandidateErrorLimit = 4.0;
+    best.found = bestError < kCandidateErrorLimit;
     return best;
-}
-
-// True when nothing lies between `origin` and `maxDistance` along `direction`. When the
-// segment ends on an object (a sphere light), pass its index as `target`: arriving within
-// the tolerance of the target counts as reaching it. (Marching on to the target's surface
-// itself would crawl for ever on the rays that meet it at grazing angles and be taken for
-// occlusion.) A spent step budget counts as blocked, for the same reason as above.
-bool unoccluded(vec3 origin, vec3 direction, float maxDistance, float insideSign,
-                float tolerance, int target)
-{
-    float t = 0.0;
-    for (int step = 0; step < uMaxMarchSteps; ++step) {
-        if (t >= maxDistance)
-            return true;
-        vec3 p = origin + t * direction;
-        float radius = insideSign * sceneDistance(p);
-        if (radius < tolerance) {
-            if (target < 0)
-                return false;
-            int nearest;
-            sceneDistanceAndObject(p, nearest);
-            return nearest == target;
-        }
-        t += radius;
-    }
-    return false;
 }
 
 // The object's outward normal: the gradient of its own distance by central differences on

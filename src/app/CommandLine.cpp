@@ -109,6 +109,14 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
             if (omega < 1.0 || omega >= 2.0)
                 throw UsageError("--over-relaxation must be at least 1 and below 2");
             line.settings.overRelaxation = static_cast<float>(omega);
+        } else if (argument == "--step-scale") {
+            const double scale = positiveDecimal(value(argument), "--step-scale");
+            if (scale > 1.0)
+                throw UsageError("--step-scale must be above 0 and at most 1");
+            line.settings.stepScale = static_cast<float>(scale);
+        } else if (argument == "--samples-per-frame") {
+            line.settings.samplesPerFrame =
+                positiveInteger(value(argument), "--samples-per-frame", 1 << 16);
         } else if (argument == "--max-bounces") {
             line.settings.maxBounces = nonNegativeInteger(value(argument), "--max-bounces", 1024);
         } else if (argument == "--rr-depth") {
@@ -168,12 +176,15 @@ output:
                         variance of the mean
   --headless            render with OSMesa even when a display is available
   --seed N              random seed (default 1)
+  --samples-per-frame N paths per pixel per frame (default 1); fewer, longer draws
   --quiet               no progress line
 
 accuracy (see docs/ACCURACY.md for what each costs):
   --hit-tolerance F     accept a hit within F pixel footprints (default 0.5)
   --max-steps N         sphere-tracing step limit per ray (default 512)
   --over-relaxation W   over-relaxation factor, 1 to < 2 (default 1.2; 1 disables it)
+  --step-scale F        multiply every sphere-tracing step by F in (0, 1] (default 1):
+                        conservative steps for user SDFs that overestimate distances
   --max-bounces N       scattering events per path (default 16)
   --rr-depth N          bounces before Russian roulette may end a path (default 4)
   --no-mis              light sampling only for sphere lights, no multiple importance sampling

@@ -10,6 +10,7 @@
 #include "scene/SceneFeatures.h"
 #include "scene/SceneParser.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -86,7 +87,10 @@ int runRender(const CommandLine& line)
     while (keepGoing()) {
         if (line.samplesPerPixel && renderer.samplesPerPixel() >= *line.samplesPerPixel)
             break;
-        if (!renderer.renderFrame(keepGoing))
+        int samples = line.settings.samplesPerFrame;
+        if (line.samplesPerPixel)
+            samples = std::min(samples, *line.samplesPerPixel - renderer.samplesPerPixel());
+        if (!renderer.renderFrame(keepGoing, samples))
             break;
         progress.update(renderer.samplesPerPixel());
         if (context->hasWindow()) {

@@ -90,15 +90,19 @@ void ProgressiveRenderer::restartAccumulation()
 {
     targets_ = AccumulationTargets(width(), height(), settings_.seed);
     frames_ = 0;
+    samplesPerPixel_ = 0;
 }
 
-bool ProgressiveRenderer::renderFrame(const std::function<bool()>& keepGoing)
+bool ProgressiveRenderer::renderFrame(const std::function<bool()>& keepGoing, int samples)
 {
+    if (samples <= 0)
+        samples = std::max(1, settings_.samplesPerFrame);
     const auto frameStart = std::chrono::steady_clock::now();
     const AccumulationTargets::Set& source = targets_.previous();
     const AccumulationTargets::Set& destination = targets_.next();
 
     program_->program().use();
+    glUniform1i(program_->program().uniformLocation("uSamplesPerFrame"), samples);
     source.estimate.bind(0);
     source.moments.bind(1);
     source.randomState.bind(2);
@@ -133,6 +137,7 @@ bool ProgressiveRenderer::renderFrame(const std::function<bool()>& keepGoing)
     if (frames_ == 0)
         firstFrameSeconds_ = secondsSince(frameStart);
     ++frames_;
+    samplesPerPixel_ += samples;
     return true;
 }
 

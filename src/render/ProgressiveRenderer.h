@@ -29,7 +29,8 @@ public:
     // a quarter of a second each (a frame of a heavy scene on a software rasteriser can take
     // many seconds); between bands `keepGoing` is asked whether to go on. When it says no,
     // the partial frame is dropped, the image stays as it was, and false is returned.
-    bool renderFrame(const std::function<bool()>& keepGoing = {});
+    // `samples` paths per pixel are traced in the frame (default: settings.samplesPerFrame).
+    bool renderFrame(const std::function<bool()>& keepGoing = {}, int samples = 0);
 
     // Replaces the scene: if its shader code is unchanged (only values differ) the uniforms
     // are re-uploaded; otherwise the shader is rebuilt. Either way accumulation restarts.
@@ -37,7 +38,8 @@ public:
 
     int width() const { return targets_.width(); }
     int height() const { return targets_.height(); }
-    int samplesPerPixel() const { return frames_; }
+    int samplesPerPixel() const { return samplesPerPixel_; }
+    int frames() const { return frames_; }
 
     // Linear radiance, RGB, top row first.
     io::Image radiance() const;
@@ -72,6 +74,7 @@ private:
     ToneMapper toneMapper_;
     gl::VertexArray triangle_;
     int frames_ = 0;
+    int samplesPerPixel_ = 0;
     int rowsPerBand_ = 0;
     double firstFrameSeconds_ = 0.0;
 };

@@ -15,6 +15,9 @@ struct RenderSettings {
     int maxMarchSteps = 512;
     // Keinert et al.'s omega; 1 turns over-relaxation off.
     float overRelaxation = 1.2f;
+    // Every sphere-tracing step is multiplied by this (at most 1): below 1 the steps are
+    // conservative, for distance functions that overestimate and declare no @lipschitz.
+    float stepScale = 1.0f;
     // Scattering events after the camera ray (the seed: 16 path vertices).
     int maxBounces = 16;
     // Scattering events before Russian roulette may end a path (the seed: 4).
@@ -23,6 +26,9 @@ struct RenderSettings {
     FresnelModel dielectricFresnel = FresnelModel::Schlick;
     ShaderVariant variant = ShaderVariant::Specialized;
     std::uint64_t seed = 1;
+    // Paths per pixel in one frame (one draw); the running mean is updated after each, so
+    // the result is the same as that many frames of one.
+    int samplesPerFrame = 1;
 };
 
 }  // namespace render

@@ -406,6 +406,7 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, ShaderVariant varian
     define(out, "HAS_BLINN_PHONG", f.has(MaterialKind::BlinnPhong) ? 1 : 0);
     define(out, "HAS_MIRROR", f.has(MaterialKind::Mirror) ? 1 : 0);
     define(out, "HAS_DIELECTRIC", f.has(MaterialKind::Dielectric) ? 1 : 0);
+    define(out, "HAS_NULL_INTERFACES", f.nullInterfaces ? 1 : 0);
     define(out, "HAS_CHECKER_PIGMENT", f.has(PigmentKind::Checker) ? 1 : 0);
     define(out, "HAS_TEXTURE_PIGMENT", f.has(PigmentKind::Texture) ? 1 : 0);
     define(out, "HAS_POINT_LIGHTS", f.pointLights ? 1 : 0);

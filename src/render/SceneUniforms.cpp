@@ -183,6 +183,7 @@ void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
     setFloat(program, "uHitTolerance", settings.hitTolerance);
     setInt(program, "uMaxMarchSteps", settings.maxMarchSteps);
     setFloat(program, "uOverRelaxation", settings.overRelaxation);
+    setFloat(program, "uStepScale", settings.stepScale);
     setInt(program, "uMaxBounces", settings.maxBounces);
     setInt(program, "uRussianRouletteDepth", settings.russianRouletteDepth);
     setInt(program, "uUseMis", settings.multipleImportanceSampling ? 1 : 0);

@@ -49,7 +49,10 @@ SceneFeatures analyseFeatures(const Scene& scene)
     ShapeFeatures shapes{features};
     for (const SceneObject& object : scene.objects) {
         shapes.visit(object.shape);
-        features.materials.insert(scene.finishes[object.finish].material());
+        const Finish& finish = scene.finishes[object.finish];
+        features.materials.insert(finish.material());
+        if (finish.material() == MaterialKind::Dielectric && finish.ior == 1.0f)
+            features.nullInterfaces = true;
         features.pigments.insert(scene.pigments[object.pigment].kind);
     }
     features.pointLights = !scene.pointLights.empty();
@@ -78,6 +81,7 @@ SceneFeatures SceneFeatures::everything(const Scene& scene)
     features.materials = {MaterialKind::Lambertian, MaterialKind::BlinnPhong, MaterialKind::Mirror,
                           MaterialKind::Dielectric};
     features.pigments = {PigmentKind::Solid, PigmentKind::Checker, PigmentKind::Texture};
+    features.nullInterfaces = true;
     features.pointLights = true;
     features.sphereLights = true;
     features.environment = scene.environment.kind;
@@ -99,6 +103,8 @@ std::string SceneFeatures::describe() const
     text << "transforms:    " << (transforms ? "yes" : "no") << "\n";
     text << "materials:     " << join(materials) << "\n";
     text << "pigments:      " << join(pigments) << "\n";
+    if (nullInterfaces)
+        text << "index-1 dielectrics: yes (transparent to shadow rays)\n";
     std::string lights;
     if (pointLights)
         lights += "point";

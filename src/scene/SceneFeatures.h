@@ -22,6 +22,9 @@ struct SceneFeatures {
     std::set<MaterialKind> materials;
     std::set<PigmentKind> pigments;
 
+    // Dielectrics of index exactly 1: light passes them unbent (see lights.glsl).
+    bool nullInterfaces = false;
+
     bool pointLights = false;
     bool sphereLights = false;
     EnvironmentKind environment = EnvironmentKind::Sky;

@@ -399,7 +399,9 @@ private:
         if (word == "sphere") {
             Sphere sphere;
             sphere.center = vector3("sphere centre");
-            sphere.radius = numberAtLeast("sphere radius", 0.0f);
+            // A sphere of radius 0 has no surface: it could only show as a speck the size of
+            // the hit tolerance, so it is refused rather than drawn wrongly.
+            sphere.radius = positiveNumber("sphere radius");
             return {sphere, std::nullopt};
         }
         if (word == "polyhedron") {
@@ -423,16 +425,22 @@ private:
         if (word == "box") {
             Box box;
             box.center = vector3("box centre");
+            const std::size_t first = position_;
             box.halfExtents.x = numberAtLeast("box half-extent x", 0.0f);
             box.halfExtents.y = numberAtLeast("box half-extent y", 0.0f);
             box.halfExtents.z = numberAtLeast("box half-extent z", 0.0f);
+            // One zero extent leaves a rectangle, a surface; two leave a line, which has none.
+            const int zeros = (box.halfExtents.x == 0.0f) + (box.halfExtents.y == 0.0f) +
+                              (box.halfExtents.z == 0.0f);
+            if (zeros > 1)
+                failAtMark(first, "box half-extents of which at most one is zero");
             return {box, std::nullopt};
         }
         if (word == "torus") {
             Torus torus;
             torus.center = vector3("torus centre");
             torus.majorRadius = numberAtLeast("torus major radius", 0.0f);
-            torus.minorRadius = numberAtLeast("torus minor radius", 0.0f);
+            torus.minorRadius = positiveNumber("torus minor radius");
             return {torus, std::nullopt};
         }
         if (word == "cone") {
@@ -448,7 +456,7 @@ private:
         if (word == "cylinder") {
             Cylinder cylinder;
             cylinder.center = vector3("cylinder centre");
-            cylinder.radius = numberAtLeast("cylinder radius", 0.0f);
+            cylinder.radius = positiveNumber("cylinder radius");
             cylinder.halfHeight = numberAtLeast("cylinder half-height", 0.0f);
             return {cylinder, std::nullopt};
         }
@@ -459,7 +467,7 @@ private:
             disk.normal = vector3("disk normal");
             if (!(glm::length(disk.normal) > 0.0f))
                 failAtMark(first, "a disk normal that is not zero");
-            disk.radius = numberAtLeast("disk radius", 0.0f);
+            disk.radius = positiveNumber("disk radius");
             return {disk, std::nullopt};
         }
         if (word == "{" || word == "}" || !isIdentifier(word))
