@@ -33,15 +33,60 @@ Surface surfaceAt(int object, vec3 p, vec3 normal, vec3 wo, float insideSign, fl
     return s;
 }
 
+// Starts the next ray at surface point p, off the surface by twice the hit tolerance (so
+// its march does not find p again), on the side `direction` leaves to, and updates
+// `insideSign` for it. The offset is taken along the new direction, not along the normal:
+// then the ray's line still passes through p, and a chain of specular bounces keeps its
+// geometry (a normal offset shifts each reflected line by the offset, and light trapped
+// by total internal reflection in a sphere drifts out after a few bounces). At grazing
+// directions, where that would go far along the surface, part of the offset is along the
+// normal instead.
+// `facingNormal` points to the side the ray arrived from (Surface.facingNormal, which the
+// BSDFs sampled against): a direction on that side stays in the region the ray travelled
+// in, one on the other side crosses into the other region. Near an edge or a corner the
+// offset point can land beyond another surface, in a solid the ray never entered (an offset
+// from a room's wall, out through the next wall, would then see the sky): the offset is
+// retried once, twice as far, and otherwise the path ends there.
+// `containing` receives the object the new ray starts inside (-1 outside every object).
+bool spawn(vec3 p, vec3 facingNormal, vec3 direction, float tolerance, inout float insideSign,
+           out vec3 origin, out int containing)
+{
+    const float kMinimumCosine = 0.25;
+    float cosLeaving = dot(direction, facingNormal);
+    bool crosses = cosLeaving < 0.0;
+    float side = crosses ? -1.0 : 1.0;
+    float expectedSign = crosses ? -insideSign : insideSign;
+    float clearance = 2.0 * tolerance;
+    float along = clearance / max(abs(cosLeaving), kMinimumCosine);
+    float normalPart = max(0.0, clearance - along * abs(cosLeaving));
+    for (int attempt = 1; attempt <= 2; ++attempt) {
+        float scale = float(attempt);
+        origin = p + direction * (scale * along) + facingNormal * (side * scale * normalPart);
+        if (expectedSign * sceneDistanceAndObject(origin, containing) > 0.0) {
+            insideSign = expectedSign;
+            if (insideSign > 0.0)
+                containing = -1;
+            return true;
+        }
+    }
+    return false;
+}
+
 vec3 tracePath(vec2 filmPoint)
 {
     vec3 origin = uCameraEye;
     vec3 direction = cameraRayDirection(filmPoint);
     RayCone cone = RayCone(0.0, cameraPixelSpread());
-    float insideSign = sceneDistance(origin) < 0.0 ? -1.0 : 1.0;
+    // A ray inside a solid can only leave that solid: where another surface touches it
+    // (glass resting on a floor), a hit within the tolerance of both is the solid's.
+    int containing;
+    float insideSign = sceneDistanceAndObject(origin, containing) < 0.0 ? -1.0 : 1.0;
+    if (insideSign > 0.0)
+        containing = -1;
 
     vec3 radiance = vec3(0.0);
     vec3 throughput = vec3(1.0);
+    float radianceScale = 1.0;  // product of the refractions' (eta_o / eta_i)^2
     bool previousWasDelta = true;  // the camera ray: emission seen directly counts in full
     float previousPdf = 0.0;
     vec3 previousPosition = origin;
@@ -55,21 +100,36 @@ vec3 tracePath(vec2 filmPoint)
             radiance += throughput * environmentRadiance(direction);
             break;
         }
+        if (containing >= 0)
+            hit.object = containing;
 
         vec3 marched = origin + hit.t * direction;
         float footprint = coneFootprint(cone, hit.t);
         float tolerance = hitTolerance(cone, hit.t);
-        vec3 normal = objectNormal(hit.object, marched, tolerance);
+        vec3 normal = sceneNormal(marched, tolerance, insideSign);
         if (normal == vec3(0.0))
             normal = -direction;
-        // The march stopped within `tolerance` of the surface. One Newton step along the
-        // ray (free: distance and normal are known) puts the point where this ray meets the
-        // surface, exactly for planes; at grazing incidence, where that step is unstable, the
-        // point is projected along the normal instead.
+        // The march stopped within `tolerance` of the surface. Projected along the normal,
+        // the point lands on the surface within that distance, safely. What the pixel sees,
+        // though, is where its ray meets the surface: rays of the pixel's own cone (camera
+        // rays and specular chains) take one Newton step along the ray (exact for planes;
+        // without it a lit plane comes out about 1 % too bright), accepted only where it
+        // clearly brings the point closer to the surface (not at grazing incidence on a curve,
+        // which the ray may not meet at all, nor into another solid near an edge). The normal
+        // is then taken again at the new point: decisions such as which side the ray came
+        // from are ill-conditioned at grazing incidence and must match the point.
+        vec3 p = marched - normal * hit.sceneDistance;
         float cosIncidence = abs(dot(direction, normal));
-        vec3 p = abs(hit.sceneDistance) < 4.0 * tolerance * cosIncidence
-                     ? marched + direction * (insideSign * hit.sceneDistance / cosIncidence)
-                     : marched - normal * hit.sceneDistance;
+        if (cone.spread > 0.0 && abs(hit.sceneDistance) < 4.0 * tolerance * cosIncidence) {
+            vec3 onRay = marched + direction * (insideSign * hit.sceneDistance / cosIncidence);
+            if (abs(sceneDistance(onRay)) <= 0.5 * abs(hit.sceneDistance)) {
+                vec3 normalOnRay = sceneNormal(onRay, tolerance, insideSign);
+                if (normalOnRay != vec3(0.0)) {
+                    p = onRay;
+                    normal = normalOnRay;
+                }
+            }
+        }
         vec3 wo = -direction;
         Surface s = surfaceAt(hit.object, p, normal, wo, insideSign, footprint, tolerance);
 
@@ -90,8 +150,8 @@ vec3 tracePath(vec2 filmPoint)
             // No interface, no scattering event: the ray goes on unbent, tinted.
             throughput *= s.color;
             ++nullCrossings;
-            origin = p - s.facingNormal * (2.0 * tolerance);
-            insideSign = sceneDistance(origin) < 0.0 ? -1.0 : 1.0;
+            if (!spawn(p, s.facingNormal, direction, tolerance, insideSign, origin, containing))
+                break;
             cone = RayCone(footprint, cone.spread);
             continue;
         }
@@ -107,15 +167,17 @@ vec3 tracePath(vec2 filmPoint)
         if (!scattered.valid)
             break;
         throughput *= scattered.weight;
+        radianceScale *= scattered.radianceScale;
         previousWasDelta = scattered.isDelta;
         previousPdf = scattered.pdf;
         // Light sampling measured its cone from the surface point; MIS weighs the same pdfs.
         previousPosition = p;
 
         // Past the first scattering events, end dim paths at random and reweight the
-        // survivors: unbiased, and no throughput clamp undoes it.
+        // survivors: unbiased, and no throughput clamp undoes it. Dimness is judged without
+        // the refractions' radiance scaling, which leaving the medium undoes.
         if (scattering > uRussianRouletteDepth) {
-            float survival = min(1.0, maxComponent(throughput));
+            float survival = min(1.0, maxComponent(throughput) / radianceScale);
             if (!(random01() < survival))
                 break;
             throughput /= survival;
@@ -124,10 +186,10 @@ vec3 tracePath(vec2 filmPoint)
         // Specular chains keep the pixel's cone; a diffuse or glossy bounce integrates
         // over directions, so its rays resolve the scene at this point's footprint.
         cone = RayCone(footprint, scattered.isDelta ? cone.spread : 0.0);
-        float side = dot(scattered.direction, normal) >= 0.0 ? 1.0 : -1.0;
-        origin = p + normal * (side * 2.0 * tolerance);
+        if (!spawn(p, s.facingNormal, scattered.direction, tolerance, insideSign, origin,
+                   containing))
+            break;
         direction = scattered.direction;
-        insideSign = sceneDistance(origin) < 0.0 ? -1.0 : 1.0;
     }
     return radiance;
 }

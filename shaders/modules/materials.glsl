@@ -25,11 +25,15 @@ struct BsdfSample {
     vec3 weight;   // f * |cos| / pdf
     float pdf;     // solid-angle density; meaningless for delta lobes
     bool isDelta;  // mirror and glass: a single direction, not reachable by light sampling
+    // The radiance scaling (eta_o / eta_i)^2 included in `weight` by a refraction, 1
+    // otherwise. It is no loss or gain of energy (leaving the medium undoes it), so Russian
+    // roulette must not read it as one (PBRT 3e, section 16.1.3: etaScale).
+    float radianceScale;
 };
 
 BsdfSample invalidSample()
 {
-    return BsdfSample(false, vec3(0.0), vec3(0.0), 0.0, false);
+    return BsdfSample(false, vec3(0.0), vec3(0.0), 0.0, false, 1.0);
 }
 
 bool isDeltaMaterial(int material)
@@ -109,7 +113,7 @@ BsdfSample blinnPhongSample(Surface s, vec3 wo)
     float pdf = blinnPhongPdf(s, wo, wi);
     if (!(pdf > 0.0))
         return invalidSample();
-    return BsdfSample(true, wi, blinnPhongEvaluate(s, wo, wi) * cosI / pdf, pdf, false);
+    return BsdfSample(true, wi, blinnPhongEvaluate(s, wo, wi) * cosI / pdf, pdf, false, 1.0);
 }
 #endif
 
@@ -123,7 +127,7 @@ BsdfSample lambertianSample(Surface s, vec3 wo)
     if (cosI <= 0.0)
         return invalidSample();
     // f * cos / pdf = (color / pi) * cos / (cos / pi)
-    return BsdfSample(true, wi, s.color, cosineHemispherePdf(cosI), false);
+    return BsdfSample(true, wi, s.color, cosineHemispherePdf(cosI), false, 1.0);
 }
 
 // --- Mirror --------------------------------------------------------------------------------
@@ -136,7 +140,7 @@ BsdfSample mirrorSample(Surface s, vec3 wo)
     float cosO = dot(n, wo);
     if (cosO <= 0.0)
         return invalidSample();
-    return BsdfSample(true, reflect(-wo, n), schlickFresnel(s.color, cosO), 0.0, true);
+    return BsdfSample(true, reflect(-wo, n), schlickFresnel(s.color, cosO), 0.0, true, 1.0);
 }
 #endif
 
@@ -160,11 +164,11 @@ BsdfSample dielectricSample(Surface s, vec3 wo)
     float reflectance = dielectricReflectance(cosIncident, etaOutgoingSide, etaOtherSide,
                                               cosTransmitted);
     if (random01() < reflectance)
-        return BsdfSample(true, reflect(-wo, n), s.color, 0.0, true);
+        return BsdfSample(true, reflect(-wo, n), s.color, 0.0, true, 1.0);
 
     float eta = etaOutgoingSide / etaOtherSide;
     vec3 refracted = -eta * wo + (eta * cosIncident - cosTransmitted) * n;
-    return BsdfSample(true, normalize(refracted), s.color * (eta * eta), 0.0, true);
+    return BsdfSample(true, normalize(refracted), s.color * (eta * eta), 0.0, true, eta * eta);
 }
 #endif
 

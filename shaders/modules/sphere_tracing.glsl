@@ -1,6 +1,6 @@
 // Ray-scene intersection by sphere tracing (Hart 1996) with over-relaxation (Keinert et al.,
-// "Enhanced Sphere Tracing", 2014). Needs sceneDistance, sceneDistanceAndObject and
-// objectDistance from the scene module.
+// "Enhanced Sphere Tracing", 2014). Needs sceneDistance and sceneDistanceAndObject from the
+// scene module.
 //
 // Tolerances follow the ray, not the world: a hit is accepted when the distance falls below
 // a fraction (uHitTolerance) of the footprint of the ray's cone there, and never below
@@ -49,6 +49,8 @@ MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone
     MarchHit best = MarchHit(false, 0.0, 0.0, -1);
 
     for (int step = 0; step < uMaxMarchSteps; ++step) {
+        if (t > uFarDistance)
+            return MarchHit(false, t, 0.0, -1);
         int object;
         float distance = sceneDistanceAndObject(origin + t * direction, object);
         float signedRadius = insideSign * distance;
@@ -72,30 +74,45 @@ MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone
             }
         }
         previousRadius = radius;
-        if (t > uFarDistance)
-            return MarchHit(false, t, distance, -1);
         t += stepLength;
     }
-    // The step budget ran out before the ray escaped. If it came within a few tolerances of
+    // The step budget ran out before the ray escaped. If it came within about a tolerance of
     // a surface it is creeping along it (grazing) or squeezing through a narrow gap, where the
     // pixel's cone overlaps that surface anyway: the closest approach is taken as the hit,
     // which keeps a closed room closed (returning "no hit" would let the sky leak in). A ray
     // that stayed far from everything was escaping and sees the environment.
-    const float kCandidateErrorLimit = 4.0;
-    best.found = bestError < kCandidateErrorLimit;
+    const float kCandidateErrorLimit = 1.5;
+    best.found = bestError < kCandidateErrorLimit && best.object >= 0;
     return best;
 }
 
-// The object's outward normal: the gradient of its own distance by central differences on
-// the four vertices of a tetrahedron (four evaluations instead of six), with a step that
-// follows the hit tolerance. Zero when the gradient vanishes; the caller chooses a fallback.
-vec3 objectNormal(int object, vec3 p, float step)
+// The gradient of the scene's distance by central differences on the four vertices of a
+// tetrahedron (four evaluations instead of six), divided by 4 * step, so that its length is
+// 1 wherever the distance is exact and smooth.
+vec3 sceneGradient(vec3 p, float step)
 {
     const vec2 k = vec2(1.0, -1.0);
-    vec3 gradient = k.xyy * objectDistance(object, p + k.xyy * step) +
-                    k.yyx * objectDistance(object, p + k.yyx * step) +
-                    k.yxy * objectDistance(object, p + k.yxy * step) +
-                    k.xxx * objectDistance(object, p + k.xxx * step);
+    return (k.xyy * sceneDistance(p + k.xyy * step) + k.yyx * sceneDistance(p + k.yyx * step) +
+            k.yxy * sceneDistance(p + k.yxy * step) + k.xxx * sceneDistance(p + k.xxx * step)) /
+           (4.0 * step);
+}
+
+// The outward normal of the scene's surface at p (within the hit tolerance of it), with a
+// difference step that follows the tolerance. It is the gradient of the whole scene's
+// distance, not the hit object's: where objects meet (two boxes sharing a face: one flat
+// top) the surface is their union, and one object's own gradient turns at its edge where
+// the union's does not. The union of distances is exact only outside the solid, though;
+// inside, near the shared face, it measures the distance to that hidden face, and taps that
+// reach there tilt the gradient. A gradient whose length is not 1 says so: it is then taken
+// again from a point backed off the surface by the taps' reach, on the side the ray came
+// from, where every tap is outside. `side` is +1 for rays outside the solid, -1 inside.
+// Zero when the gradient vanishes; the caller chooses a fallback.
+vec3 sceneNormal(vec3 p, float step, float side)
+{
+    vec3 gradient = sceneGradient(p, step);
     float magnitude = length(gradient);
+    if (abs(magnitude - 1.0) > 0.01 && magnitude > 0.0)
+        gradient = sceneGradient(p + (side * 1.75 * step / magnitude) * gradient, step);
+    magnitude = length(gradient);
     return magnitude > 0.0 ? gradient / magnitude : vec3(0.0);
 }

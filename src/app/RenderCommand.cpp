@@ -7,6 +7,7 @@
 #include "render/PathTracerProgram.h"
 #include "render/ProgressiveRenderer.h"
 #include "scene/FileLookup.h"
+#include "scene/InvisibleObjects.h"
 #include "scene/SceneFeatures.h"
 #include "scene/SceneParser.h"
 
@@ -147,8 +148,8 @@ int printFeatures(const CommandLine& line)
 int printShader(const CommandLine& line)
 {
     const scene::Scene scene = scene::parseSceneFile(line.scene);
-    const render::SceneShaderCode code =
-        render::generateSceneShaderCode(scene, line.settings.variant);
+    const render::SceneShaderCode code = render::generateSceneShaderCode(
+        scene::dropInvisibleObjects(scene), line.settings.variant);
     std::cout << render::assemblePathTracerSource(code,
                                                   scene::FileLookup::dataDirectory() / "shaders")
                      .text();

@@ -2,6 +2,7 @@
 
 #include "gl/GlError.h"
 #include "scene/FileLookup.h"
+#include "scene/InvisibleObjects.h"
 
 #include <algorithm>
 #include <chrono>
@@ -43,8 +44,8 @@ void checkRenderSize(int width, int height)
 ProgressiveRenderer::ProgressiveRenderer(const scene::Scene& scene, int width, int height,
                                          const RenderSettings& settings)
     : settings_(settings),
-      code_(generateSceneShaderCode(scene, settings.variant)),
-      uniforms_(packSceneUniforms(scene, code_)),
+      code_(generateSceneShaderCode(scene::dropInvisibleObjects(scene), settings.variant)),
+      uniforms_(packSceneUniforms(scene::dropInvisibleObjects(scene), code_)),
       program_((checkRenderSize(width, height),
                 std::make_unique<PathTracerProgram>(code_, shaderDirectory()))),
       pigmentTextures_(loadPigmentTextures(uniforms_.textureLayers)),
@@ -69,8 +70,9 @@ void ProgressiveRenderer::uploadAll()
     gl::throwOnGlError("uploading the scene");
 }
 
-void ProgressiveRenderer::setScene(const scene::Scene& scene)
+void ProgressiveRenderer::setScene(const scene::Scene& original)
 {
+    const scene::Scene scene = scene::dropInvisibleObjects(original);
     SceneShaderCode code = generateSceneShaderCode(scene, settings_.variant);
     SceneUniforms uniforms = packSceneUniforms(scene, code);
     const bool sameStructure = code.defines == code_.defines &&

@@ -20,7 +20,8 @@ namespace render {
 class ProgressiveRenderer {
 public:
     // Builds the shader for the scene (specialised or general, per settings.variant) and the
-    // accumulation targets. Throws with a readable message when a shader does not compile,
+    // accumulation targets. Objects that do nothing to light (scene/InvisibleObjects.h) are
+    // left out. Throws with a readable message when a shader does not compile,
     // a texture cannot be read, or the size exceeds what the GL supports.
     ProgressiveRenderer(const scene::Scene& scene, int width, int height,
                         const RenderSettings& settings);

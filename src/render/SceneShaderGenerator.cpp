@@ -283,11 +283,9 @@ std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compile
     };
     std::vector<Entry> cheap;
     std::vector<Entry> bounded;
-    std::vector<std::string> functions;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         Entry entry{i, compiler.emitFunction(object.shape), -1};
-        functions.push_back(entry.function);
         const ShapeBound bound = boundShape(object.shape);
         if (worthBounding(object) && bound.finite) {
             entry.boundSlot = compiler.allocateBound(bound);
@@ -302,13 +300,7 @@ std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compile
 
     std::ostringstream out;
     out << compiler.functions();
-    out << "// The scene: the union of its objects, each the object's own shape function.\n\n";
-    out << "float objectDistance(int object, vec3 p)\n{\n";
-    out << "    switch (object) {\n";
-    for (std::size_t i = 0; i < functions.size(); ++i)
-        out << "    case " << i << ": return " << functions[i] << "(p);\n";
-    out << "    }\n    return FLOAT_MAX;\n}\n\n";
-
+    out << "// The scene: the union of its objects.\n\n";
     out << "// Cheap objects first, so that bounded expensive ones are skipped as often as "
            "possible.\n";
     out << "float sceneDistance(vec3 p)\n{\n    float d = FLOAT_MAX;\n";

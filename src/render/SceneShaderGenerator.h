@@ -36,7 +36,7 @@ struct SceneShaderCode {
     scene::SceneFeatures features;  // what the shader is built for
     std::string defines;            // lines for the preamble, after #version
     std::vector<std::filesystem::path> userSdfFiles;
-    std::string sceneFunctions;     // sceneDistance, sceneDistanceAndObject, objectDistance
+    std::string sceneFunctions;     // sceneDistance, sceneDistanceAndObject
 
     std::vector<glm::vec4> shapeParameters;
     std::vector<glm::ivec4> shapeProgram;  // General only
