@@ -72,124 +72,151 @@ bool spawn(vec3 p, vec3 facingNormal, vec3 direction, float tolerance, inout flo
     return false;
 }
 
-vec3 tracePath(vec2 filmPoint)
+// Most paths carry no more than 16 crossings of index-1 dielectrics (see lights.glsl).
+const int kMaxNullCrossings = 32;
+
+// A path between segments: the ray about to be traced and what the path has gathered.
+struct PathState {
+    vec3 origin;
+    vec3 direction;
+    RayCone cone;
+    float insideSign;  // -1 while the ray travels inside a solid
+    int containing;    // the solid it travels in, or -1
+    vec3 throughput;
+    float radianceScale;  // product of the refractions' (eta_o / eta_i)^2
+    vec3 radiance;
+    bool previousWasDelta;
+    float previousPdf;
+    vec3 previousPosition;
+    int scattering;
+    int nullCrossings;
+};
+
+// The most segments (traced rays) one path can take.
+int maxSegmentsPerPath()
 {
-    vec3 origin = uCameraEye;
-    vec3 direction = cameraRayDirection(filmPoint);
-    RayCone cone = RayCone(0.0, cameraPixelSpread());
+    return uMaxBounces + 1 + kMaxNullCrossings;
+}
+
+PathState startPath(vec2 filmPoint)
+{
+    PathState path;
+    path.origin = uCameraEye;
+    path.direction = cameraRayDirection(filmPoint);
+    path.cone = RayCone(0.0, cameraPixelSpread());
     // A ray inside a solid can only leave that solid: where another surface touches it
     // (glass resting on a floor), a hit within the tolerance of both is the solid's.
-    int containing;
-    float insideSign = sceneDistanceAndObject(origin, containing) < 0.0 ? -1.0 : 1.0;
-    if (insideSign > 0.0)
-        containing = -1;
+    path.insideSign = sceneDistanceAndObject(path.origin, path.containing) < 0.0 ? -1.0 : 1.0;
+    if (path.insideSign > 0.0)
+        path.containing = -1;
+    path.throughput = vec3(1.0);
+    path.radianceScale = 1.0;
+    path.radiance = vec3(0.0);
+    path.previousWasDelta = true;  // the camera ray: emission seen directly counts in full
+    path.previousPdf = 0.0;
+    path.previousPosition = path.origin;
+    path.scattering = 0;
+    path.nullCrossings = 0;
+    return path;
+}
 
-    vec3 radiance = vec3(0.0);
-    vec3 throughput = vec3(1.0);
-    float radianceScale = 1.0;  // product of the refractions' (eta_o / eta_i)^2
-    bool previousWasDelta = true;  // the camera ray: emission seen directly counts in full
-    float previousPdf = 0.0;
-    vec3 previousPosition = origin;
+// Traces the path's next ray and scatters at what it hits. Returns false once the path has
+// ended, its radiance then final.
+bool continuePath(inout PathState path)
+{
+    MarchHit hit = sphereTrace(path.origin, path.direction, path.insideSign, path.cone);
+    if (!hit.found) {
+        path.radiance += path.throughput * environmentRadiance(path.direction);
+        return false;
+    }
+    if (path.containing >= 0)
+        hit.object = path.containing;
 
-    int scattering = 0;
-    int nullCrossings = 0;
-    const int kMaxNullCrossings = 32;
-    for (int segment = 0; segment <= uMaxBounces + kMaxNullCrossings; ++segment) {
-        MarchHit hit = sphereTrace(origin, direction, insideSign, cone);
-        if (!hit.found) {
-            radiance += throughput * environmentRadiance(direction);
-            break;
-        }
-        if (containing >= 0)
-            hit.object = containing;
-
-        vec3 marched = origin + hit.t * direction;
-        float footprint = coneFootprint(cone, hit.t);
-        float tolerance = hitTolerance(cone, hit.t);
-        vec3 normal = sceneNormal(marched, tolerance, insideSign);
-        if (normal == vec3(0.0))
-            normal = -direction;
-        // The march stopped within `tolerance` of the surface. Projected along the normal,
-        // the point lands on the surface within that distance, safely. What the pixel sees,
-        // though, is where its ray meets the surface: rays of the pixel's own cone (camera
-        // rays and specular chains) take one Newton step along the ray (exact for planes;
-        // without it a lit plane comes out about 1 % too bright), accepted only where it
-        // clearly brings the point closer to the surface (not at grazing incidence on a curve,
-        // which the ray may not meet at all, nor into another solid near an edge). The normal
-        // is then taken again at the new point: decisions such as which side the ray came
-        // from are ill-conditioned at grazing incidence and must match the point.
-        vec3 p = marched - normal * hit.sceneDistance;
-        float cosIncidence = abs(dot(direction, normal));
-        if (cone.spread > 0.0 && abs(hit.sceneDistance) < 4.0 * tolerance * cosIncidence) {
-            vec3 onRay = marched + direction * (insideSign * hit.sceneDistance / cosIncidence);
-            if (abs(sceneDistance(onRay)) <= 0.5 * abs(hit.sceneDistance)) {
-                vec3 normalOnRay = sceneNormal(onRay, tolerance, insideSign);
-                if (normalOnRay != vec3(0.0)) {
-                    p = onRay;
-                    normal = normalOnRay;
-                }
+    vec3 direction = path.direction;
+    float insideSign = path.insideSign;
+    vec3 marched = path.origin + hit.t * direction;
+    float footprint = coneFootprint(path.cone, hit.t);
+    float tolerance = hitTolerance(path.cone, hit.t);
+    vec3 normal = sceneNormal(marched, tolerance, insideSign);
+    if (normal == vec3(0.0))
+        normal = -direction;
+    // The march stopped within `tolerance` of the surface. Projected along the normal, the
+    // point lands on the surface within that distance, safely. What the pixel sees, though,
+    // is where its ray meets the surface: rays of the pixel's own cone (camera rays and
+    // specular chains) take one Newton step along the ray (exact for planes; without it a
+    // lit plane comes out about 1 % too bright), accepted only where it clearly brings the
+    // point closer to the surface (not at grazing incidence on a curve, which the ray may
+    // not meet at all, nor into another solid near an edge). The normal is then taken again
+    // at the new point: decisions such as which side the ray came from are ill-conditioned
+    // at grazing incidence and must match the point.
+    vec3 p = marched - normal * hit.sceneDistance;
+    float cosIncidence = abs(dot(direction, normal));
+    if (path.cone.spread > 0.0 && abs(hit.sceneDistance) < 4.0 * tolerance * cosIncidence) {
+        vec3 onRay = marched + direction * (insideSign * hit.sceneDistance / cosIncidence);
+        if (abs(sceneDistance(onRay)) <= 0.5 * abs(hit.sceneDistance)) {
+            vec3 normalOnRay = sceneNormal(onRay, tolerance, insideSign);
+            if (normalOnRay != vec3(0.0)) {
+                p = onRay;
+                normal = normalOnRay;
             }
         }
-        vec3 wo = -direction;
-        Surface s = surfaceAt(hit.object, p, normal, wo, insideSign, footprint, tolerance);
+    }
+    vec3 wo = -direction;
+    Surface s = surfaceAt(hit.object, p, normal, wo, insideSign, footprint, tolerance);
 
 #if HAS_SPHERE_LIGHTS
-        // Emission, seen from outside the sphere.
-        if (s.lightIndex >= 0 && s.entering) {
-            float weight = 1.0;
-            if (!previousWasDelta)
-                weight = uUseMis != 0
-                             ? powerHeuristic(previousPdf,
-                                              sphereLightPdf(s.lightIndex, previousPosition))
-                             : 0.0;
-            radiance += throughput * s.emission * weight;
-        }
+    // Emission, seen from outside the sphere.
+    if (s.lightIndex >= 0 && s.entering) {
+        float weight = 1.0;
+        if (!path.previousWasDelta)
+            weight = uUseMis != 0
+                         ? powerHeuristic(path.previousPdf,
+                                          sphereLightPdf(s.lightIndex, path.previousPosition))
+                         : 0.0;
+        path.radiance += path.throughput * s.emission * weight;
+    }
 #endif
 #if HAS_NULL_INTERFACES
-        if (isNullInterface(hit.object) && nullCrossings < kMaxNullCrossings) {
-            // No interface, no scattering event: the ray goes on unbent, tinted.
-            throughput *= s.color;
-            ++nullCrossings;
-            if (!spawn(p, s.facingNormal, direction, tolerance, insideSign, origin, containing))
-                break;
-            cone = RayCone(footprint, cone.spread);
-            continue;
-        }
-#endif
-        if (scattering == uMaxBounces)
-            break;
-        ++scattering;
-
-        if (!isDeltaMaterial(s.material))
-            radiance += throughput * directLighting(s, wo, tolerance, insideSign);
-
-        BsdfSample scattered = bsdfSample(s, wo);
-        if (!scattered.valid)
-            break;
-        throughput *= scattered.weight;
-        radianceScale *= scattered.radianceScale;
-        previousWasDelta = scattered.isDelta;
-        previousPdf = scattered.pdf;
-        // Light sampling measured its cone from the surface point; MIS weighs the same pdfs.
-        previousPosition = p;
-
-        // Past the first scattering events, end dim paths at random and reweight the
-        // survivors: unbiased, and no throughput clamp undoes it. Dimness is judged without
-        // the refractions' radiance scaling, which leaving the medium undoes.
-        if (scattering > uRussianRouletteDepth) {
-            float survival = min(1.0, maxComponent(throughput) / radianceScale);
-            if (!(random01() < survival))
-                break;
-            throughput /= survival;
-        }
-
-        // Specular chains keep the pixel's cone; a diffuse or glossy bounce integrates
-        // over directions, so its rays resolve the scene at this point's footprint.
-        cone = RayCone(footprint, scattered.isDelta ? cone.spread : 0.0);
-        if (!spawn(p, s.facingNormal, scattered.direction, tolerance, insideSign, origin,
-                   containing))
-            break;
-        direction = scattered.direction;
+    if (isNullInterface(hit.object) && path.nullCrossings < kMaxNullCrossings) {
+        // No interface, no scattering event: the ray goes on unbent, tinted.
+        path.throughput *= s.color;
+        ++path.nullCrossings;
+        path.cone = RayCone(footprint, path.cone.spread);
+        return spawn(p, s.facingNormal, direction, tolerance, path.insideSign, path.origin,
+                     path.containing);
     }
-    return radiance;
+#endif
+    if (path.scattering == uMaxBounces)
+        return false;
+    ++path.scattering;
+
+    if (!isDeltaMaterial(s.material))
+        path.radiance += path.throughput * directLighting(s, wo, tolerance, insideSign);
+
+    BsdfSample scattered = bsdfSample(s, wo);
+    if (!scattered.valid)
+        return false;
+    path.throughput *= scattered.weight;
+    path.radianceScale *= scattered.radianceScale;
+    path.previousWasDelta = scattered.isDelta;
+    path.previousPdf = scattered.pdf;
+    // Light sampling measured its cone from the surface point; MIS weighs the same pdfs.
+    path.previousPosition = p;
+
+    // Past the first scattering events, end dim paths at random and reweight the survivors:
+    // unbiased, and no throughput clamp undoes it. Dimness is judged without the
+    // refractions' radiance scaling, which leaving the medium undoes.
+    if (path.scattering > uRussianRouletteDepth) {
+        float survival = min(1.0, maxComponent(path.throughput) / path.radianceScale);
+        if (!(random01() < survival))
+            return false;
+        path.throughput /= survival;
+    }
+
+    // Specular chains keep the pixel's cone; a diffuse or glossy bounce integrates over
+    // directions, so its rays resolve the scene at this point's footprint.
+    path.cone = RayCone(footprint, scattered.isDelta ? path.cone.spread : 0.0);
+    path.direction = scattered.direction;
+    return spawn(p, s.facingNormal, scattered.direction, tolerance, path.insideSign,
+                 path.origin, path.containing);
 }

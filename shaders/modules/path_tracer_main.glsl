@@ -29,9 +29,19 @@ void main()
     vec4 moments = texelFetch(uPreviousMoments, pixel, 0);
     rngState = texelFetch(uPreviousRandomState, pixel, 0);
 
-    for (int i = 0; i < uSamplesPerFrame; ++i) {
-        // A uniformly random point inside the pixel: box-filtered anti-aliasing.
-        vec3 value = tracePath(vec2(pixel) + random2());
+    // uSamplesPerFrame paths, one after the other, in one loop of path segments: a pixel
+    // whose path ends early starts its next path at once instead of idling until its
+    // neighbours' longer paths end. (Neighbouring pixels run in lockstep on SIMD hardware,
+    // llvmpipe included, so a loop of whole paths costs the longest path of the group for
+    // every path.)
+    // A uniformly random point inside the pixel for each path: box-filtered anti-aliasing.
+    PathState path = startPath(vec2(pixel) + random2());
+    int completed = 0;
+    int segments = uSamplesPerFrame * maxSegmentsPerPath();
+    for (int segment = 0; segment < segments; ++segment) {
+        if (continuePath(path))
+            continue;
+        vec3 value = path.radiance;
         if (isValidSample(value)) {
             float count = estimate.a + 1.0;
             vec3 deviation = value - estimate.rgb;
@@ -41,6 +51,9 @@ void main()
         } else {
             moments.a += 1.0;
         }
+        if (++completed == uSamplesPerFrame)
+            break;
+        path = startPath(vec2(pixel) + random2());
     }
     outEstimate = estimate;
     outMoments = moments;

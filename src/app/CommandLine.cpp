@@ -117,6 +117,13 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
         } else if (argument == "--samples-per-frame") {
             line.settings.samplesPerFrame =
                 positiveInteger(value(argument), "--samples-per-frame", 1 << 16);
+        } else if (argument == "--band-seconds") {
+            double seconds = 0.0;
+            const std::string text = value(argument);
+            if (!parseDecimal(text, seconds) || seconds < 0.0)
+                throw UsageError("--band-seconds must be a number of 0 or more, not '" + text +
+                                 "'");
+            line.settings.secondsPerBand = seconds;
         } else if (argument == "--max-bounces") {
             line.settings.maxBounces = nonNegativeInteger(value(argument), "--max-bounces", 1024);
         } else if (argument == "--rr-depth") {
@@ -177,6 +184,8 @@ output:
   --headless            render with OSMesa even when a display is available
   --seed N              random seed (default 1)
   --samples-per-frame N paths per pixel per frame (default 1); fewer, longer draws
+  --band-seconds S      draw frames in bands of about S seconds each, so a render stops
+                        or a window responds between them (default 0.25; 0: whole frames)
   --quiet               no progress line
 
 accuracy (see docs/ACCURACY.md for what each costs):

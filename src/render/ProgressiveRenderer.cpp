@@ -13,8 +13,6 @@ namespace render {
 
 namespace {
 
-constexpr double kSecondsPerBand = 0.25;
-
 std::filesystem::path shaderDirectory()
 {
     return scene::FileLookup::dataDirectory() / "shaders";
@@ -128,9 +126,12 @@ bool ProgressiveRenderer::renderFrame(const std::function<bool()>& keepGoing, in
         glFinish();
         const double seconds = secondsSince(bandStart);
         row += rows;
-        // Aim the next bands at kSecondsPerBand each.
-        const double rowsForTarget = rows * kSecondsPerBand / std::max(seconds, 1e-4);
-        rowsPerBand_ = std::clamp(static_cast<int>(rowsForTarget), 1, height());
+        // Aim the next bands at settings_.secondsPerBand each.
+        if (settings_.secondsPerBand > 0.0) {
+            const double rowsForTarget =
+                rows * settings_.secondsPerBand / std::max(seconds, 1e-4);
+            rowsPerBand_ = std::clamp(static_cast<int>(rowsForTarget), 1, height());
+        }
     }
     glDisable(GL_SCISSOR_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -27,7 +27,7 @@ public:
                         const RenderSettings& settings);
 
     // Adds one sample per pixel. The frame is drawn in horizontal bands sized to take about
-    // a quarter of a second each (a frame of a heavy scene on a software rasteriser can take
+    // settings.secondsPerBand each (a frame of a heavy scene on a software rasteriser can take
     // many seconds); between bands `keepGoing` is asked whether to go on. When it says no,
     // the partial frame is dropped, the image stays as it was, and false is returned.
     // `samples` paths per pixel are traced in the frame (default: settings.samplesPerFrame).

@@ -29,6 +29,9 @@ struct RenderSettings {
     // Paths per pixel in one frame (one draw); the running mean is updated after each, so
     // the result is the same as that many frames of one.
     int samplesPerFrame = 1;
+    // A frame is drawn in horizontal bands sized to take about this long each, so that a
+    // render can stop (or a window respond) between them; 0 draws whole frames at once.
+    double secondsPerBand = 0.25;
 };
 
 }  // namespace render
