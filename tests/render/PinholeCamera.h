@@ -1,0 +1,79 @@
+#pragma once
+// The scene format's camera on the CPU, for closed-form expectations: pixel (i, j) covers
+// uv = ((2 (i, j) - (w, h)) / h) tan(fovy / 2) with row 0 at the bottom (GL), and the
+// renderer jitters each sample uniformly inside it. Images are read back top row first, so
+// picture row y is GL row h - 1 - y.
+#include "scene/Scene.h"
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+
+namespace render_tests {
+
+class PinholeCamera {
+public:
+    PinholeCamera(const scene::Camera& camera, int width, int height)
+        : eye_(camera.eye),
+          frame_(scene::cameraFrame(camera)),
+          tanHalfFovy_(std::tan(glm::radians(camera.verticalFieldOfViewDegrees) / 2.0f)),
+          width_(width),
+          height_(height)
+    {
+    }
+
+    glm::vec3 eye() const { return eye_; }
+
+    // The unit direction through film point (fx, fy) of picture coordinates: x to the
+    // right, y down from the top edge, in pixels.
+    glm::dvec3 direction(double fx, double fy) const
+    {
+        const double glY = height_ - fy;
+        const double u = (2.0 * fx - width_) / height_ * tanHalfFovy_;
+        const double v = (2.0 * glY - height_) / height_ * tanHalfFovy_;
+        return glm::normalize(u * glm::dvec3(frame_.right) + v * glm::dvec3(frame_.trueUp) +
+                              glm::dvec3(frame_.forward));
+    }
+
+    // The mean of f(direction) over picture pixel (x, y), by the midpoint rule on a
+    // `subdivisions`^2 grid: what the renderer's uniform jitter converges to.
+    template <typename Function>
+    double pixelAverage(int x, int y, int subdivisions, Function f) const
+    {
+        double sum = 0.0;
+        for (int a = 0; a < subdivisions; ++a)
+            for (int b = 0; b < subdivisions; ++b)
+                sum += f(direction(x + (a + 0.5) / subdivisions, y + (b + 0.5) / subdivisions));
+        return sum / (subdivisions * subdivisions);
+    }
+
+    // True when every corner of pixel (x, y) satisfies `test`: the whole pixel sees one
+    // thing (for convex regions such as a sphere's disk or a half-plane).
+    template <typename Test>
+    bool wholePixel(int x, int y, Test test) const
+    {
+        return test(direction(x, y)) && test(direction(x + 1, y)) &&
+               test(direction(x, y + 1)) && test(direction(x + 1, y + 1));
+    }
+
+private:
+    glm::vec3 eye_;
+    scene::CameraFrame frame_;
+    double tanHalfFovy_;
+    int width_;
+    int height_;
+};
+
+// Distance along the unit ray (origin, direction) to the sphere's near side, or -1.
+inline double raySphere(const glm::dvec3& origin, const glm::dvec3& direction,
+                        const glm::dvec3& center, double radius)
+{
+    const glm::dvec3 toCenter = center - origin;
+    const double along = glm::dot(toCenter, direction);
+    const double squaredMiss = glm::dot(toCenter, toCenter) - along * along;
+    if (squaredMiss > radius * radius || along <= 0.0)
+        return -1.0;
+    return along - std::sqrt(radius * radius - squaredMiss);
+}
+
+}  // namespace render_tests

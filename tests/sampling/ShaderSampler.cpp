@@ -1,0 +1,134 @@
+#include "sampling/ShaderSampler.h"
+
+#include "gl/Framebuffer.h"
+#include "gl/GlError.h"
+#include "gl/Texture.h"
+#include "gl/VertexArray.h"
+#include "render/AccumulationTargets.h"
+#include "render/PathTracerProgram.h"
+#include "render/ShaderSource.h"
+#include "support/TestPaths.h"
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace sampling_tests {
+
+namespace {
+
+render::ShaderSource probeSource()
+{
+    const auto shaders = testing_support::sourceDirectory() / "shaders";
+    render::ShaderSource source;
+    // What the modules expect the scene's preamble to define: only Blinn-Phong among the
+    // materials, and one element in each scene array (unused here).
+    source.add("<preamble: the sampling probe>",
+               "#version 330 core\n"
+               "#define HAS_BLINN_PHONG 1\n#define HAS_MIRROR 0\n#define HAS_DIELECTRIC 0\n"
+               "#define SHAPE_PARAMETER_ARRAY_SIZE 1\n#define OBJECT_ARRAY_SIZE 1\n"
+               "#define PIGMENT_ARRAY_SIZE 1\n#define FINISH_ARRAY_SIZE 1\n"
+               "#define LIGHT_ARRAY_SIZE 1\n");
+    for (const char* module :
+         {"constants.glsl", "rng.glsl", "sampling.glsl", "scene_data.glsl", "fresnel.glsl",
+          "materials.glsl"})
+        source.addFile(shaders / "modules" / module, shaders);
+    source.addFile(testing_support::testsDirectory() / "sampling" / "sampling_probe.frag",
+                   testing_support::testsDirectory());
+    return source;
+}
+
+gl::Program compileProbe()
+{
+    const render::ShaderSource fragment = probeSource();
+    return gl::Program(
+        render::fullscreenVertexSource(testing_support::sourceDirectory() / "shaders"),
+        fragment.text(), "the sampling probe",
+        [fragment](const std::string& log) { return fragment.explainLog(log); });
+}
+
+}  // namespace
+
+ShaderSampler::ShaderSampler() : program_(compileProbe()) {}
+
+std::vector<glm::vec4> ShaderSampler::draw(int mode, const SamplingCase& samplingCase,
+                                           int width, int height, std::uint64_t seed,
+                                           const GridLayout& grid) const
+{
+    std::vector<std::uint32_t> seeds;
+    seeds.reserve(static_cast<std::size_t>(width) * height * 4);
+    for (std::uint64_t pixel = 0; pixel < static_cast<std::uint64_t>(width) * height; ++pixel)
+        for (std::uint32_t word : render::initialRandomState(seed, pixel))
+            seeds.push_back(word);
+    const gl::Texture seedTexture = gl::createTexture2D(GL_RGBA32UI, width, height,
+                                                        GL_RGBA_INTEGER, GL_UNSIGNED_INT,
+                                                        seeds.data());
+    const gl::Texture target =
+        gl::createTexture2D(GL_RGBA32F, width, height, GL_RGBA, GL_FLOAT, nullptr);
+    const gl::Framebuffer framebuffer({&target});
+    const gl::VertexArray triangle;
+
+    program_.use();
+    seedTexture.bind(0);
+    auto location = [&](const char* name) { return program_.uniformLocation(name); };
+    glUniform1i(location("uSeeds"), 0);
+    glUniform1i(location("uMode"), mode);
+    glUniform1i(location("uRoutine"), static_cast<int>(samplingCase.routine));
+    glUniform1f(location("uExponent"), samplingCase.exponent);
+    glUniform1f(location("uOneMinusCosThetaMax"), samplingCase.oneMinusCosThetaMax);
+    glUniform3fv(location("uNormal"), 1, glm::value_ptr(samplingCase.normal));
+    glUniform3fv(location("uOutgoing"), 1, glm::value_ptr(samplingCase.outgoing));
+    glUniform3fv(location("uPigment"), 1, glm::value_ptr(samplingCase.pigment));
+    glUniformMatrix3fv(location("uGridFrame"), 1, GL_FALSE, glm::value_ptr(grid.frame));
+    glUniform2f(location("uGridCells"), static_cast<float>(grid.thetaCells),
+                static_cast<float>(grid.phiCells));
+    glUniform1f(location("uGridThetaMax"), grid.thetaMax);
+    glUniform1i(location("uExactFresnel"), 0);
+
+
+    framebuffer.bindForDrawing();
+    glViewport(0, 0, width, height);
+    triangle.drawFullscreenTriangle();
+    framebuffer.bindForReading(0);
+    std::vector<glm::vec4> values(static_cast<std::size_t>(width) * height);
+    glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, values.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl::throwOnGlError("running the sampling probe");
+    return values;
+}
+
+std::vector<glm::vec4> ShaderSampler::sampleDirections(const SamplingCase& samplingCase,
+                                                       int width, int height,
+                                                       std::uint64_t seed) const
+{
+    return draw(0, samplingCase, width, height, seed, GridLayout{});
+}
+
+std::vector<glm::vec4> ShaderSampler::sampleWeights(const SamplingCase& samplingCase, int width,
+                                                    int height, std::uint64_t seed) const
+{
+    return draw(2, samplingCase, width, height, seed, GridLayout{});
+}
+
+std::vector<float> ShaderSampler::pdfOnGrid(const SamplingCase& samplingCase,
+                                            const GridLayout& grid) const
+{
+    const std::vector<glm::vec4> values =
+        draw(1, samplingCase, grid.thetaCells, grid.phiCells, 0, grid);
+    std::vector<float> pdf(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i)
+        pdf[i] = values[i].w;
+    return pdf;
+}
+
+std::vector<glm::vec3> ShaderSampler::reflectanceOnGrid(const SamplingCase& samplingCase,
+                                                        const GridLayout& grid) const
+{
+    const std::vector<glm::vec4> values =
+        draw(3, samplingCase, grid.thetaCells, grid.phiCells, 0, grid);
+    std::vector<glm::vec3> reflectance(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i)
+        reflectance[i] = glm::vec3(values[i]);
+    return reflectance;
+}
+
+}  // namespace sampling_tests

@@ -1,0 +1,68 @@
+#pragma once
+// Runs the renderer's GLSL sampling routines and pdfs (shaders/modules/sampling.glsl and
+// materials.glsl, unmodified) on the GPU through a probe shader of the test's own
+// (sampling_probe.frag), so that what is tested is the code that renders.
+#include "gl/Shader.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace sampling_tests {
+
+// Values of the probe's uRoutine.
+enum class SamplingRoutine {
+    CosineHemisphere = 0,     // sampleCosineHemisphere / cosineHemispherePdf, local frame
+    UniformCone = 1,          // sampleUniformCone / uniformConePdf, local frame
+    BlinnPhongHalfVector = 2,  // sampleBlinnPhongHalfVector / blinnPhongHalfVectorPdf, local
+    BlinnPhongMaterial = 3,   // blinnPhongSample / blinnPhongPdf / blinnPhongEvaluate, world
+};
+
+struct SamplingCase {
+    SamplingRoutine routine = SamplingRoutine::CosineHemisphere;
+    float exponent = 1.0f;
+    float oneMinusCosThetaMax = 1.0f;
+    glm::vec3 normal{0.0f, 0.0f, 1.0f};    // the material's only
+    glm::vec3 outgoing{0.0f, 0.0f, 1.0f};  // the material's only: wo, unit
+    glm::vec3 pigment{1.0f};               // the material's only: R0 of Schlick's Fresnel
+};
+
+// The directions of a pdf grid: cell (i, j) is centred on theta = (i + 1/2) thetaMax /
+// thetaCells, phi = (j + 1/2) 2 pi / phiCells in `frame` (columns: tangent, bitangent, axis).
+struct GridLayout {
+    int thetaCells = 512;
+    int phiCells = 512;
+    float thetaMax = 1.5707963f;
+    glm::mat3 frame{1.0f};
+};
+
+class ShaderSampler {
+public:
+    ShaderSampler();
+
+    // width x height samples, one per fragment, each fragment's generator seeded as the
+    // renderer seeds its pixels (render::initialRandomState). x, y, z: the direction; w: its
+    // pdf, or -1 where the routine returned no sample.
+    std::vector<glm::vec4> sampleDirections(const SamplingCase& samplingCase, int width,
+                                            int height, std::uint64_t seed) const;
+
+    // The material's sample weights f cos / pdf (xyz; w = 1, or all zero for no sample).
+    std::vector<glm::vec4> sampleWeights(const SamplingCase& samplingCase, int width, int height,
+                                         std::uint64_t seed) const;
+
+    // The pdf at every grid cell centre, theta-major: index = j * thetaCells + i.
+    std::vector<float> pdfOnGrid(const SamplingCase& samplingCase, const GridLayout& grid) const;
+
+    // The material's f cos at every grid cell centre (RGB), same order.
+    std::vector<glm::vec3> reflectanceOnGrid(const SamplingCase& samplingCase,
+                                             const GridLayout& grid) const;
+
+private:
+    std::vector<glm::vec4> draw(int mode, const SamplingCase& samplingCase, int width,
+                                int height, std::uint64_t seed, const GridLayout& grid) const;
+
+    gl::Program program_;
+};
+
+}  // namespace sampling_tests

@@ -1,0 +1,98 @@
+// The test's own main(), appended to the renderer's modules (constants, rng, sampling,
+// scene_data, fresnel, materials): it runs the real sampling and pdf routines, one per
+// fragment, and writes what they returned into an RGBA32F target read back by the test.
+//
+//   uMode 0: draw one sample per fragment; rgb = the direction, a = its pdf (-1: no sample)
+//   uMode 1: evaluate the pdf at the centre of grid cell (theta, phi) = fragment (x, y);
+//            rgb = the direction, a = the pdf
+//   uMode 2: draw one sample per fragment; rgb = its weight f cos / pdf, a = 1 if valid
+//   uMode 3: evaluate f cos at the centre of grid cell (theta, phi); rgb = f cos
+//
+// Routines (uRoutine): 0 cosine hemisphere, 1 uniform cone, 2 Blinn-Phong half vector (all
+// in the local frame, +z up), 3 the Blinn-Phong material (world directions).
+
+uniform int uMode;
+uniform int uRoutine;
+uniform usampler2D uSeeds;
+uniform float uExponent;
+uniform float uOneMinusCosThetaMax;
+uniform vec3 uNormal;
+uniform vec3 uOutgoing;
+uniform vec3 uPigment;
+uniform mat3 uGridFrame;   // local (theta, phi) directions to world
+uniform vec2 uGridCells;   // theta cells, phi cells
+uniform float uGridThetaMax;
+
+layout(location = 0) out vec4 outValue;
+
+Surface probeSurface()
+{
+    Surface s;
+    s.position = vec3(0.0);
+    s.normal = uNormal;
+    s.facingNormal = uNormal;
+    s.entering = true;
+    s.color = uPigment;
+    s.emission = vec3(0.0);
+    s.material = MATERIAL_BLINN_PHONG;
+    s.phongExponent = uExponent;
+    s.ior = 1.0;
+    s.lightIndex = -1;
+    return s;
+}
+
+float routinePdf(vec3 direction)
+{
+    if (uRoutine == 0)
+        return cosineHemispherePdf(direction.z);
+    if (uRoutine == 1) {
+        // The cone's support: directions within thetaMax of +z, compared as 1 - cos.
+        float oneMinusCos = dot(direction.xy, direction.xy) / (1.0 + direction.z);
+        return direction.z > 0.0 && oneMinusCos <= uOneMinusCosThetaMax
+                   ? uniformConePdf(uOneMinusCosThetaMax)
+                   : 0.0;
+    }
+    if (uRoutine == 2)
+        return blinnPhongHalfVectorPdf(direction.z, uExponent);
+    return blinnPhongPdf(probeSurface(), uOutgoing, direction);
+}
+
+void main()
+{
+    ivec2 fragment = ivec2(gl_FragCoord.xy);
+    if (uMode == 1 || uMode == 3) {
+        float theta = gl_FragCoord.x / uGridCells.x * uGridThetaMax;
+        float phi = gl_FragCoord.y / uGridCells.y * TWO_PI;
+        vec3 local = vec3(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta));
+        vec3 direction = uGridFrame * local;
+        if (uMode == 1) {
+            outValue = vec4(direction, routinePdf(direction));
+        } else {
+            Surface s = probeSurface();
+            float cosine = max(dot(s.facingNormal, direction), 0.0);
+            outValue = vec4(blinnPhongEvaluate(s, uOutgoing, direction) * cosine, 1.0);
+        }
+        return;
+    }
+
+    rngState = texelFetch(uSeeds, fragment, 0);
+    if (uMode == 2) {
+        BsdfSample scattered = blinnPhongSample(probeSurface(), uOutgoing);
+        outValue = scattered.valid ? vec4(scattered.weight, 1.0) : vec4(0.0);
+        return;
+    }
+    if (uRoutine == 0) {
+        vec3 direction = sampleCosineHemisphere(random2());
+        outValue = vec4(direction, cosineHemispherePdf(direction.z));
+    } else if (uRoutine == 1) {
+        vec3 direction = sampleUniformCone(random2(), uOneMinusCosThetaMax);
+        outValue = vec4(direction, uniformConePdf(uOneMinusCosThetaMax));
+    } else if (uRoutine == 2) {
+        vec3 direction = sampleBlinnPhongHalfVector(random2(), uExponent);
+        outValue = vec4(direction, blinnPhongHalfVectorPdf(direction.z, uExponent));
+    } else {
+        BsdfSample scattered = blinnPhongSample(probeSurface(), uOutgoing);
+        outValue = scattered.valid ? vec4(scattered.direction, scattered.pdf)
+                                   : vec4(0.0, 0.0, 0.0, -1.0);
+    }
+}

@@ -1,0 +1,212 @@
+// Every error the scene format lists: a scene::SceneError whose message names the file, the
+// line, the token read and what was expected; nothing is returned half-read.
+#include "scene/SceneTestSupport.h"
+
+namespace scene_tests {
+namespace {
+
+TEST(SceneErrors, TruncatedFileNamesTheEndOfTheFileOnTheLastLine)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 sphere 0 0\n"), 13, "", "sphere centre, z"));
+}
+
+TEST(SceneErrors, FileEndingInsideTheCameraNamesTheCamera)
+{
+    EXPECT_TRUE(failsAt("0 0 5\n0 0\n", 2, "", "camera target point, z"));
+}
+
+TEST(SceneErrors, EmptyFileIsAnError)
+{
+    EXPECT_TRUE(failsAt("", 1, "", "camera eye position"));
+}
+
+TEST(SceneErrors, FewerObjectsThanTheCountSaysIsAnError)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(3,
+                                         "0 0 sphere 0 0 0 1\n"
+                                         "0 0 sphere 0 2 0 1\n"),
+                        14, "", "pigment index"));
+}
+
+TEST(SceneErrors, MoreObjectsThanTheCountSaysIsAnError)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1,
+                                         "0 0 sphere 0 0 0 1\n"
+                                         "0 0 sphere 0 2 0 1\n"),
+                        14, "0", "the end of the file"));
+}
+
+TEST(SceneErrors, MorePigmentsThanTheCountSaysIsAnError)
+{
+    // One pigment announced, two written: the second pigment's kind is read as the finish
+    // count.
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45\n0\n1\nsolid 1 1 1\nsolid 1 1 1\n0\n0\n", 8,
+                        "solid", "number of finishes"));
+}
+
+TEST(SceneErrors, PigmentIndexOutOfRangeNamesTheIndex)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(2,
+                                         "0 0 sphere 0 0 0 1\n"
+                                         "2 0 sphere 0 2 0 1\n"),
+                        14, "2", "a pigment index from 0 to 1"));
+}
+
+TEST(SceneErrors, NegativePigmentIndexIsOutOfRange)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "-1 0 sphere 0 0 0 1\n"), 13, "-1",
+                        "a pigment index from 0 to 1"));
+}
+
+TEST(SceneErrors, FinishIndexOutOfRangeNamesTheIndex)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0\n7 sphere 0 0 0 1\n"), 14, "7",
+                        "a finish index from 0 to 1"));
+}
+
+TEST(SceneErrors, IndexIntoAnEmptyListSaysThereIsNone)
+{
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45\n0\n0\n0\n1\n0 0 sphere 0 0 0 1\n", 9, "0",
+                        "no pigment index"));
+}
+
+TEST(SceneErrors, UnknownObjectTypeThatCannotNameAFunctionIsAnError)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 3d-sphere 0 0 0 1\n"), 13, "3d-sphere",
+                        "an object type"));
+}
+
+TEST(SceneErrors, UnknownObjectTypeWithoutAShaderFileIsAMissingUserSdf)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 sphre 0 0 0 1\n"), 13, "sphre",
+                        "sphre.glsl"));
+}
+
+TEST(SceneErrors, MissingUserSdfFileNamesTheFoldersSearched)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "\n0 0 no_such_shape 1 2 3\n"), 14,
+                        "no_such_shape", "looked in"));
+}
+
+TEST(SceneErrors, NegativeSphereRadiusIsAnError)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 sphere 0 0 0\n-1\n"), 14, "-1",
+                        "sphere radius"));
+}
+
+TEST(SceneErrors, NegativeTorusRadiusIsAnError)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 torus 0 0 0 -2 0.5\n"), 13, "-2",
+                        "torus major radius"));
+}
+
+TEST(SceneErrors, NegativeCylinderRadiusIsAnError)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 cylinder 0 0 0 -0.5 1\n"), 13, "-0.5",
+                        "cylinder radius"));
+}
+
+TEST(SceneErrors, NegativeDiskRadiusIsAnError)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 disk 0 0 0  0 1 0  -3\n"), 13, "-3",
+                        "disk radius"));
+}
+
+TEST(SceneErrors, NegativeBoxExtentIsAnError)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 box 0 0 0  1 -1 1\n"), 13, "-1",
+                        "box half-extent y"));
+}
+
+TEST(SceneErrors, MissingTextureFileNamesTheFile)
+{
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45\n0\n1\ntexmap\n  missing-texture.ppm 2\n", 8,
+                        "missing-texture.ppm", "an existing texture file"));
+}
+
+TEST(SceneErrors, UnknownPigmentKindIsAnError)
+{
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45\n0\n2\nsolid 1 1 1\nmarble 1 1 1\n", 8,
+                        "marble", "solid, checker or texmap"));
+}
+
+TEST(SceneErrors, EmissionOnANonSphereIsAnError)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(2,
+                                         "0 1 sphere 0 3 0 0.5\n"
+                                         "0 1 box 0 0 0 1 1 1\n"),
+                        14, "box", "only spheres may emit"));
+}
+
+TEST(SceneErrors, EmissionOnACsgBlockIsAnError)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 1 union { sphere 0 0 0 1 sphere 1 0 0 1 }\n"),
+                        13, "union", "only spheres may emit"));
+}
+
+TEST(SceneErrors, NonNumericTokenWhereANumberBelongsIsAnError)
+{
+    EXPECT_TRUE(failsAt("0 0 5\n0 zero 0\n", 2, "zero", "a number (camera target point, y)"));
+}
+
+TEST(SceneErrors, NumberWithTrailingCharactersIsNotANumber)
+{
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45deg\n", 4, "45deg",
+                        "vertical field of view"));
+}
+
+TEST(SceneErrors, FractionalCountIsAnError)
+{
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45\n1.5\n", 5, "1.5", "number of point lights"));
+}
+
+TEST(SceneErrors, NegativeCountIsAnError)
+{
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45\n-1\n", 5, "-1", "number of point lights"));
+}
+
+TEST(SceneErrors, NegativeLightIntensityIsAnError)
+{
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45\n1\n0 4 0  10 -10 10\n", 6, "-10",
+                        "intensity"));
+}
+
+TEST(SceneErrors, UpVectorParallelToTheViewDirectionIsAnError)
+{
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 0 -3\n45\n", 3, "0", "not parallel to the view"));
+}
+
+TEST(SceneErrors, ZeroUpVectorIsAnError)
+{
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 0 0\n45\n", 3, "0", "up vector"));
+}
+
+TEST(SceneErrors, TargetAtTheEyeIsAnError)
+{
+    EXPECT_TRUE(failsAt("1 2 3\n1 2 3\n0 1 0\n45\n", 2, "1", "different from the eye"));
+}
+
+TEST(SceneErrors, FieldOfViewOfZeroIsAnError)
+{
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n0\n", 4, "0", "strictly between 0 and 180"));
+}
+
+TEST(SceneErrors, FieldOfViewOf180IsAnError)
+{
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n180\n", 4, "180", "strictly between 0 and 180"));
+}
+
+TEST(SceneErrors, TransmissiveFinishWithoutAPositiveIndexIsAnError)
+{
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45\n0\n0\n1\n0 0 0 0 0 1\n0\n", 9, "0",
+                        "positive index of refraction"));
+}
+
+TEST(SceneErrors, ErrorLineCountsLinesOfCommentsAndBlankLines)
+{
+    EXPECT_TRUE(failsAt("# a comment\n\n0 0 5 # eye\n# another\n0 0 0\n0 1 0\n\n-45\n", 8, "-45",
+                        "strictly between 0 and 180"));
+}
+
+}  // namespace
+}  // namespace scene_tests

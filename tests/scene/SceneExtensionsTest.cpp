@@ -1,0 +1,343 @@
+// Our extensions of the format: comments, the environment keyword, CSG blocks, transforms,
+// and the declarations a user SDF file may make. A classic file never needs them.
+#include "scene/SceneTestSupport.h"
+
+#include <glm/gtc/epsilon.hpp>
+
+#include <cctype>
+#include <fstream>
+#include <variant>
+
+namespace scene_tests {
+namespace {
+
+using namespace scene;
+
+::testing::AssertionResult near(const glm::vec3& actual, const glm::vec3& expected)
+{
+    if (glm::all(glm::epsilonEqual(actual, expected, 1e-5f)))
+        return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure()
+           << "expected (" << expected.x << ", " << expected.y << ", " << expected.z
+           << "), got (" << actual.x << ", " << actual.y << ", " << actual.z << ")";
+}
+
+const Shape& onlyShape(const Scene& scene)
+{
+    return scene.objects.at(0).shape;
+}
+
+// --- comments ---------------------------------------------------------------------------
+
+TEST(SceneComments, RunFromTheHashToTheEndOfTheLine)
+{
+    const Scene scene = parse("# camera\n0 0 5 # eye\n0 0 0#target, no space\n0 1 0\n45\n"
+                              "0 # no lights\n1 solid 1 1 1 # # #\n1 0 0 0 0 0 0 0\n"
+                              "1 0 0 sphere 0 0 0 1#\n");
+    EXPECT_TRUE(near(scene.camera.target, glm::vec3(0.0f)));
+    ASSERT_EQ(scene.objects.size(), 1u);
+}
+
+TEST(SceneComments, HideWhatWouldBeAnError)
+{
+    EXPECT_NO_THROW(parse(sceneWithObjects(1, "0 0 sphere 0 0 0 1 # 0 0 sphere 0 0 0 -1\n")));
+}
+
+// --- environment --------------------------------------------------------------------------
+
+std::string withEnvironment(const std::string& keyword)
+{
+    return keyword + "\n" + sceneWithObjects(1, "0 0 sphere 0 0 0 1\n");
+}
+
+TEST(SceneEnvironment, NoneMeansBlack)
+{
+    EXPECT_EQ(parse(withEnvironment("environment none")).environment.kind,
+              EnvironmentKind::None);
+}
+
+TEST(SceneEnvironment, SkyIsTheDefaultGradient)
+{
+    EXPECT_EQ(parse(withEnvironment("environment sky")).environment.kind, EnvironmentKind::Sky);
+}
+
+TEST(SceneEnvironment, ThreeNumbersAreAConstantRadiance)
+{
+    const Environment environment = parse(withEnvironment("environment 1 0.5 .25")).environment;
+    EXPECT_EQ(environment.kind, EnvironmentKind::Constant);
+    EXPECT_TRUE(near(environment.color, {1.0f, 0.5f, 0.25f}));
+}
+
+TEST(SceneEnvironment, MayStandBetweenSections)
+{
+    const Scene scene = parse("0 0 5\n0 0 0\n0 1 0\n45\nenvironment 2 2 2\n0\n1 solid 1 1 1\n"
+                              "1 0 0 0 0 0 0 0\n1 0 0 sphere 0 0 0 1\n");
+    EXPECT_EQ(scene.environment.kind, EnvironmentKind::Constant);
+    EXPECT_TRUE(near(scene.environment.color, glm::vec3(2.0f)));
+}
+
+TEST(SceneEnvironment, MayFollowTheLastObject)
+{
+    const Scene scene = parse(sceneWithObjects(1, "0 0 sphere 0 0 0 1\nenvironment none\n"));
+    EXPECT_EQ(scene.environment.kind, EnvironmentKind::None);
+}
+
+TEST(SceneEnvironment, NegativeRadianceIsAnError)
+{
+    EXPECT_TRUE(failsAt("environment 1 -1 1\n" + sceneWithObjects(1, "0 0 sphere 0 0 0 1\n"), 1,
+                        "-1", "environment radiance"));
+}
+
+TEST(SceneEnvironment, UnknownWordIsAnError)
+{
+    EXPECT_TRUE(failsAt("environment cloudy\n", 1, "cloudy", "environment radiance"));
+}
+
+// --- CSG blocks ---------------------------------------------------------------------------
+
+const CsgNode& csgOf(const Scene& scene)
+{
+    return std::get<CsgNode>(onlyShape(scene).geometry);
+}
+
+struct CsgSpelling {
+    const char* written;
+    CsgOperator op;
+    float parameter;
+};
+
+class CsgBlock : public ::testing::TestWithParam<CsgSpelling> {};
+
+TEST_P(CsgBlock, ParsesToItsOperatorAndParameter)
+{
+    const CsgSpelling spelling = GetParam();
+    const Scene scene = parse(sceneWithObjects(
+        1, std::string("0 0 ") + spelling.written + " { sphere 0 0 0 1 box 1 0 0 1 1 1 }\n"));
+    const CsgNode& node = csgOf(scene);
+    EXPECT_EQ(node.op, spelling.op) << spelling.written;
+    EXPECT_FLOAT_EQ(node.parameter, spelling.parameter);
+    ASSERT_EQ(node.children.size(), 2u);
+    EXPECT_TRUE(std::holds_alternative<Sphere>(node.children[0].geometry));
+    EXPECT_TRUE(std::holds_alternative<Box>(node.children[1].geometry));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Operator, CsgBlock,
+    ::testing::Values(CsgSpelling{"union", CsgOperator::Union, 0.0f},
+                      CsgSpelling{"intersection", CsgOperator::Intersection, 0.0f},
+                      CsgSpelling{"difference", CsgOperator::Difference, 0.0f},
+                      CsgSpelling{"smooth_union exp 8", CsgOperator::SmoothUnion, 8.0f},
+                      CsgSpelling{"smooth_intersection exp 4",
+                                  CsgOperator::SmoothIntersection, 4.0f},
+                      CsgSpelling{"smooth_difference exp 16", CsgOperator::SmoothDifference,
+                                  16.0f},
+                      CsgSpelling{"smooth_union poly 0.3", CsgOperator::PolynomialSmoothUnion,
+                                  0.3f},
+                      CsgSpelling{"smooth_intersection poly 0.2",
+                                  CsgOperator::PolynomialSmoothIntersection, 0.2f},
+                      CsgSpelling{"smooth_difference poly 0.1",
+                                  CsgOperator::PolynomialSmoothDifference, 0.1f}),
+    [](const ::testing::TestParamInfo<CsgSpelling>& info) {
+        std::string name = info.param.written;
+        for (char& c : name)
+            if (!std::isalnum(static_cast<unsigned char>(c)))
+                c = '_';
+        return name;
+    });
+
+TEST(CsgBlocks, NestAndTakeAnyNumberOfChildren)
+{
+    const Scene scene = parse(sceneWithObjects(
+        1, "0 0 difference {\n  union { sphere 0 0 0 1 sphere 1 0 0 1 sphere 2 0 0 1 }\n"
+           "  intersection { box 0 0 0 1 1 1 sphere 0 0 0 1.2 }\n}\n"));
+    const CsgNode& node = csgOf(scene);
+    ASSERT_EQ(node.children.size(), 2u);
+    EXPECT_EQ(std::get<CsgNode>(node.children[0].geometry).children.size(), 3u);
+    EXPECT_EQ(std::get<CsgNode>(node.children[1].geometry).op, CsgOperator::Intersection);
+}
+
+TEST(CsgBlocks, BracesMayTouchWords)
+{
+    const Scene scene = parse(sceneWithObjects(1, "0 0 union{sphere 0 0 0 1 sphere 1 0 0 1}\n"));
+    EXPECT_EQ(csgOf(scene).children.size(), 2u);
+}
+
+TEST(CsgBlocks, FewerThanTwoChildrenIsAnError)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 union {\n sphere 0 0 0 1\n}\n"), 15, "}",
+                        "at least two shapes inside 'union'"));
+}
+
+TEST(CsgBlocks, UnclosedBlockNamesTheLineItOpened)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 union {\nsphere 0 0 0 1\nsphere 1 0 0 1\n"), 15,
+                        "", "'}' closing the 'union' opened on line 13"));
+}
+
+TEST(CsgBlocks, UnknownSmoothKindIsAnError)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 smooth_union cubic 2 { sphere 0 0 0 1 "
+                                            "sphere 1 0 0 1 }\n"),
+                        13, "cubic", "exp (sharpness k) or poly (radius)"));
+}
+
+TEST(CsgBlocks, ExponentialSharpnessMustBePositive)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 smooth_union exp 0 { sphere 0 0 0 1 "
+                                            "sphere 1 0 0 1 }\n"),
+                        13, "0", "sharpness"));
+}
+
+// --- transforms ---------------------------------------------------------------------------
+
+TEST(Transforms, TranslateMovesTheShapeAndKeepsItsGeometry)
+{
+    const Scene scene = parse(sceneWithObjects(1, "0 0 translate 1 2 3 sphere 0 0 0 1\n"));
+    const Shape& shape = onlyShape(scene);
+    ASSERT_TRUE(shape.transform.has_value());
+    EXPECT_FLOAT_EQ(std::get<Sphere>(shape.geometry).radius, 1.0f);
+    EXPECT_TRUE(near(applyTransform(*shape.transform, {1.0f, 0.0f, 0.0f}), {2.0f, 2.0f, 3.0f}));
+}
+
+TEST(Transforms, RotateTurnsAboutTheAxisByDegreesRightHanded)
+{
+    const Scene scene = parse(sceneWithObjects(1, "0 0 rotate 0 2 0 90 box 0 0 0 1 1 1\n"));
+    const Shape& shape = onlyShape(scene);
+    ASSERT_TRUE(shape.transform.has_value());
+    EXPECT_TRUE(near(applyTransform(*shape.transform, {1.0f, 0.0f, 0.0f}), {0.0f, 0.0f, -1.0f}))
+        << "90 degrees about +y takes +x to -z";
+}
+
+TEST(Transforms, ScaleIsUniformAboutTheOrigin)
+{
+    const Scene scene = parse(sceneWithObjects(1, "0 0 scale 2 torus 1 0 0 1 0.5\n"));
+    const Shape& shape = onlyShape(scene);
+    ASSERT_TRUE(shape.transform.has_value());
+    EXPECT_FLOAT_EQ(shape.transform->scale, 2.0f);
+    EXPECT_TRUE(near(applyTransform(*shape.transform, {1.0f, 1.0f, 0.0f}), {2.0f, 2.0f, 0.0f}));
+}
+
+TEST(Transforms, WrittenOutermostFirstApplyInnermostFirst)
+{
+    const Scene scene = parse(sceneWithObjects(1, "0 0 translate 1 0 0 scale 2 rotate 0 0 1 90 sphere 0 0 0 1\n"));
+    const Shape& shape = onlyShape(scene);
+    ASSERT_TRUE(shape.transform.has_value());
+    // (1, 0, 0) turned to (0, 1, 0), doubled, then moved by +x.
+    EXPECT_TRUE(near(applyTransform(*shape.transform, {1.0f, 0.0f, 0.0f}), {1.0f, 2.0f, 0.0f}));
+}
+
+TEST(Transforms, ApplyToCsgBlocksAndInsideThem)
+{
+    const Scene scene = parse(sceneWithObjects(
+        1, "0 0 scale 0.5 union { translate 0 1 0 sphere 0 0 0 1  box 0 0 0 1 1 1 }\n"));
+    const Shape& shape = onlyShape(scene);
+    ASSERT_TRUE(shape.transform.has_value());
+    const CsgNode& node = std::get<CsgNode>(shape.geometry);
+    ASSERT_TRUE(node.children[0].transform.has_value());
+    EXPECT_FALSE(node.children[1].transform.has_value());
+}
+
+TEST(Transforms, NonPositiveScaleIsAnError)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 scale -2 sphere 0 0 0 1\n"), 13, "-2",
+                        "scale"));
+}
+
+TEST(Transforms, ZeroRotationAxisIsAnError)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 rotate 0 0 0 30 sphere 0 0 0 1\n"), 13, "0",
+                        "rotation axis"));
+}
+
+TEST(Transforms, EmissiveSphereLightMovesWithItsTransform)
+{
+    const Scene scene =
+        parse(sceneWithObjects(1, "0 1 translate 0 2 0 scale 3 sphere 1 0 0 0.5\n"));
+    const auto lights = sphereLights(scene);
+    ASSERT_EQ(lights.size(), 1u);
+    EXPECT_TRUE(near(lights[0].center, {3.0f, 2.0f, 0.0f}));
+    EXPECT_FLOAT_EQ(lights[0].radius, 1.5f);
+}
+
+// --- user SDF declarations ------------------------------------------------------------------
+
+// A folder of scene and shader files written by the test, removed afterwards.
+class UserSdfFiles : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        folder_ = std::filesystem::temp_directory_path() /
+                  ("scene-tests-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+                   "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        std::filesystem::create_directories(folder_);
+    }
+    void TearDown() override { std::filesystem::remove_all(folder_); }
+
+    void write(const std::string& name, const std::string& text) const
+    {
+        std::ofstream(folder_ / name) << text;
+    }
+
+    UserSdf parseUserSdf(const std::string& name) const
+    {
+        write("scene.in", sceneWithObjects(1, "0 0 " + name + " 1 2 3\n"));
+        const Scene scene = parseSceneFile(folder_ / "scene.in");
+        return std::get<UserSdf>(scene.objects.at(0).shape.geometry);
+    }
+
+    std::filesystem::path folder_;
+};
+
+TEST_F(UserSdfFiles, DeclareABoundAndALipschitzFactorInComments)
+{
+    write("blob.glsl", "// A blob.\n// @bound 2.5\n// @lipschitz 3\n"
+                       "float blob(vec3 p, vec3 x) { return length(p - x) - 1.0; }\n");
+    const UserSdf user = parseUserSdf("blob");
+    ASSERT_TRUE(user.boundingRadius.has_value());
+    EXPECT_FLOAT_EQ(*user.boundingRadius, 2.5f);
+    EXPECT_FLOAT_EQ(user.lipschitz, 3.0f);
+}
+
+TEST_F(UserSdfFiles, WithoutDeclarationsAreUnboundedAndOneLipschitz)
+{
+    write("blob.glsl", "float blob(vec3 p, vec3 x) { return length(p - x) - 1.0; }\n");
+    const UserSdf user = parseUserSdf("blob");
+    EXPECT_FALSE(user.boundingRadius.has_value());
+    EXPECT_FLOAT_EQ(user.lipschitz, 1.0f);
+}
+
+TEST_F(UserSdfFiles, AreFoundBesideTheSceneBeforeTheProjectShaders)
+{
+    write("knot.glsl", "// @bound 0.75\nfloat knot(vec3 p, vec3 x) { return length(p - x) - 0.5; }\n");
+    const UserSdf user = parseUserSdf("knot");
+    EXPECT_EQ(user.sourcePath, folder_ / "knot.glsl");
+    EXPECT_FLOAT_EQ(user.boundingRadius.value_or(0.0f), 0.75f);
+}
+
+TEST_F(UserSdfFiles, AreFoundInAShadersFolderBesideTheScene)
+{
+    std::filesystem::create_directories(folder_ / "shaders");
+    write("shaders/blob.glsl", "float blob(vec3 p, vec3 x) { return length(p - x) - 1.0; }\n");
+    EXPECT_EQ(parseUserSdf("blob").sourcePath, folder_ / "shaders" / "blob.glsl");
+}
+
+TEST(UserSdfDeclarations, TheProjectKnotStepsByHalfItsDistance)
+{
+    const Scene scene = parseSceneFile(testing_support::sourceDirectory() / "scenes" / "scene4.in");
+    const auto& knot = std::get<UserSdf>(scene.objects.at(0).shape.geometry);
+    EXPECT_EQ(knot.name, "knot");
+    EXPECT_FLOAT_EQ(knot.lipschitz, 2.0f);
+    EXPECT_TRUE(knot.boundingRadius.has_value());
+}
+
+TEST(UserSdfDeclarations, ReservedWordsCannotNameAUserSdf)
+{
+    for (const char* word : {"sphere", "polyhedron", "box", "torus", "cone", "cylinder", "disk",
+                             "union", "intersection", "difference", "smooth_union",
+                             "translate", "rotate", "scale"})
+        EXPECT_TRUE(isReservedShapeWord(word)) << word;
+    EXPECT_FALSE(isReservedShapeWord("knot"));
+}
+
+}  // namespace
+}  // namespace scene_tests

@@ -1,0 +1,105 @@
+// analyseFeatures: what a scene uses, so that its shader is built with that and nothing else.
+#include "scene/SceneFeatures.h"
+#include "scene/SceneTestSupport.h"
+
+namespace scene_tests {
+namespace {
+
+using namespace scene;
+
+SceneFeatures classicFeatures(int number)
+{
+    return analyseFeatures(parseSceneFile(testing_support::sourceDirectory() / "scenes" /
+                                          ("scene" + std::to_string(number) + ".in")));
+}
+
+TEST(SceneFeatures, ClassicSceneThreeUsesEveryAnalyticPrimitiveBlinnPhongAndAPointLight)
+{
+    const SceneFeatures features = classicFeatures(3);
+    EXPECT_EQ(features.primitives,
+              (std::set<PrimitiveKind>{PrimitiveKind::Sphere, PrimitiveKind::Polyhedron,
+                                       PrimitiveKind::Box, PrimitiveKind::Torus,
+                                       PrimitiveKind::Cone, PrimitiveKind::Cylinder}));
+    EXPECT_EQ(features.materials, std::set<MaterialKind>{MaterialKind::BlinnPhong})
+        << "scene 3's emissive finish is used by no object, so it adds no material";
+    EXPECT_EQ(features.pigments, std::set<PigmentKind>{PigmentKind::Solid});
+    EXPECT_TRUE(features.pointLights);
+    EXPECT_FALSE(features.sphereLights);
+    EXPECT_TRUE(features.userSdfs.empty());
+    EXPECT_TRUE(features.csgOperators.empty());
+    EXPECT_FALSE(features.transforms);
+    EXPECT_EQ(features.environment, EnvironmentKind::Sky);
+}
+
+TEST(SceneFeatures, ClassicSceneFourUsesTheKnotAndATexture)
+{
+    const SceneFeatures features = classicFeatures(4);
+    ASSERT_EQ(features.userSdfs.size(), 1u);
+    EXPECT_EQ(features.userSdfs.begin()->first, "knot");
+    EXPECT_TRUE(features.has(PigmentKind::Texture));
+    EXPECT_TRUE(features.has(PigmentKind::Solid));
+    EXPECT_EQ(features.primitives, std::set<PrimitiveKind>{PrimitiveKind::Polyhedron});
+}
+
+TEST(SceneFeatures, ClassicSceneOneUsesEveryMaterialItsFinishesNameAndASphereLight)
+{
+    const SceneFeatures features = classicFeatures(1);
+    EXPECT_EQ(features.materials,
+              (std::set<MaterialKind>{MaterialKind::Lambertian, MaterialKind::Dielectric}));
+    EXPECT_TRUE(features.sphereLights);
+    EXPECT_FALSE(features.pointLights);
+    EXPECT_TRUE(features.has(PigmentKind::Checker));
+    EXPECT_TRUE(features.has(PigmentKind::Texture));
+}
+
+TEST(SceneFeatures, CsgOperatorsAreCollectedFromNestedBlocks)
+{
+    const SceneFeatures features = analyseFeatures(parse(sceneWithObjects(
+        1, "0 0 smooth_difference poly 0.2 { box 0 0 0 1 1 1 intersection { sphere 0 0 0 1 "
+           "torus 0 0 0 1 0.2 } }\n")));
+    EXPECT_EQ(features.csgOperators,
+              (std::set<CsgOperator>{CsgOperator::PolynomialSmoothDifference,
+                                     CsgOperator::Intersection}));
+    EXPECT_EQ(features.primitives,
+              (std::set<PrimitiveKind>{PrimitiveKind::Box, PrimitiveKind::Sphere,
+                                       PrimitiveKind::Torus}));
+    EXPECT_FALSE(features.transforms);
+}
+
+TEST(SceneFeatures, TransformAnywhereInATreeCounts)
+{
+    const SceneFeatures features = analyseFeatures(parse(sceneWithObjects(
+        1, "0 0 union { sphere 0 0 0 1 scale 2 sphere 1 0 0 1 }\n")));
+    EXPECT_TRUE(features.transforms);
+}
+
+TEST(SceneFeatures, MaterialsComeOnlyFromFinishesObjectsUse)
+{
+    const std::string text = "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
+                             "3\n0 0 0 0 0 0 0\n0 0 0 0 1 0 0\n0 0 0 0 0 1 1.5\n"
+                             "1\n0 1 sphere 0 0 0 1\n";
+    EXPECT_EQ(analyseFeatures(parse(text)).materials,
+              std::set<MaterialKind>{MaterialKind::Mirror});
+}
+
+TEST(SceneFeatures, EnvironmentIsTheScenes)
+{
+    const SceneFeatures features = analyseFeatures(
+        parse("environment none\n" + sceneWithObjects(1, "0 0 sphere 0 0 0 1\n")));
+    EXPECT_EQ(features.environment, EnvironmentKind::None);
+}
+
+TEST(SceneFeatures, EverythingHasEveryFeatureAndTheScenesUserSdfs)
+{
+    const Scene scene = parse(sceneWithObjects(1, "0 0 twisted_bar 0 0 0\n"));
+    const SceneFeatures features = SceneFeatures::everything(scene);
+    EXPECT_EQ(features.primitives.size(), 7u);
+    EXPECT_EQ(features.csgOperators.size(), 9u);
+    EXPECT_EQ(features.materials.size(), 4u);
+    EXPECT_EQ(features.pigments.size(), 3u);
+    EXPECT_TRUE(features.transforms && features.pointLights && features.sphereLights);
+    EXPECT_EQ(features.userSdfs.count("twisted_bar"), 1u);
+}
+
+}  // namespace
+}  // namespace scene_tests

@@ -1,0 +1,147 @@
+#include "support/ChildProcess.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstring>
+#include <sstream>
+#include <stdexcept>
+
+extern char** environ;
+
+namespace testing_support {
+
+namespace {
+
+std::vector<std::string> childEnvironment(
+    const std::map<std::string, std::optional<std::string>>& changes)
+{
+    std::vector<std::string> result;
+    for (char** entry = environ; *entry != nullptr; ++entry) {
+        const std::string variable = *entry;
+        const std::string name = variable.substr(0, variable.find('='));
+        if (changes.count(name) == 0)
+            result.push_back(variable);
+    }
+    for (const auto& [name, value] : changes)
+        if (value)
+            result.push_back(name + "=" + *value);
+    return result;
+}
+
+std::vector<char*> pointers(std::vector<std::string>& strings)
+{
+    std::vector<char*> result;
+    for (std::string& text : strings)
+        result.push_back(text.data());
+    result.push_back(nullptr);
+    return result;
+}
+
+}  // namespace
+
+std::string ProcessResult::describeEnd() const
+{
+    if (timedOut)
+        return "timed out and was killed";
+    if (exited)
+        return "exit status " + std::to_string(exitStatus);
+    return "killed by signal " + std::to_string(terminatingSignal) + " (" +
+           strsignal(terminatingSignal) + ")";
+}
+
+ProcessResult runProcess(const std::vector<std::string>& arguments, const ProcessOptions& options)
+{
+    // Everything the child needs is prepared before fork: after it, only async-signal-safe
+    // calls are allowed.
+    std::vector<std::string> argumentStrings = arguments;
+    std::vector<char*> argv = pointers(argumentStrings);
+    std::vector<std::string> environmentStrings = childEnvironment(options.environment);
+    std::vector<char*> envp = pointers(environmentStrings);
+    const std::string directory = options.workingDirectory.string();
+
+    int outputPipe[2];
+    int errorPipe[2];
+    if (pipe(outputPipe) != 0 || pipe(errorPipe) != 0)
+        throw std::runtime_error("pipe failed");
+
+    const auto start = std::chrono::steady_clock::now();
+    const pid_t pid = fork();
+    if (pid < 0)
+        throw std::runtime_error("fork failed");
+    if (pid == 0) {
+        const int nullInput = open("/dev/null", O_RDONLY);
+        dup2(nullInput, STDIN_FILENO);
+        dup2(outputPipe[1], STDOUT_FILENO);
+        dup2(errorPipe[1], STDERR_FILENO);
+        close(outputPipe[0]);
+        close(errorPipe[0]);
+        close(outputPipe[1]);
+        close(errorPipe[1]);
+        if (chdir(directory.c_str()) != 0)
+            _exit(126);
+        execve(argv[0], argv.data(), envp.data());
+        _exit(127);
+    }
+    close(outputPipe[1]);
+    close(errorPipe[1]);
+
+    ProcessResult result;
+    auto elapsed = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    bool signalled = false;
+    pollfd streams[2] = {{outputPipe[0], POLLIN, 0}, {errorPipe[0], POLLIN, 0}};
+    std::string* sinks[2] = {&result.standardOutput, &result.standardError};
+    int openStreams = 2;
+    while (openStreams > 0) {
+        if (options.signalAfterSeconds && !signalled && elapsed() >= *options.signalAfterSeconds) {
+            kill(pid, options.signal);
+            signalled = true;
+        }
+        if (!result.timedOut && elapsed() >= options.timeoutSeconds) {
+            kill(pid, SIGKILL);
+            result.timedOut = true;
+        }
+        if (poll(streams, 2, 20) < 0)
+            continue;
+        for (int i = 0; i < 2; ++i) {
+            if (streams[i].fd < 0 || streams[i].revents == 0)
+                continue;
+            char buffer[4096];
+            const ssize_t count = read(streams[i].fd, buffer, sizeof buffer);
+            if (count > 0) {
+                sinks[i]->append(buffer, static_cast<std::size_t>(count));
+            } else {
+                close(streams[i].fd);
+                streams[i].fd = -1;
+                --openStreams;
+            }
+        }
+    }
+    int status = 0;
+    waitpid(pid, &status, 0);
+    result.seconds = elapsed();
+    result.exited = WIFEXITED(status);
+    if (result.exited)
+        result.exitStatus = WEXITSTATUS(status);
+    else if (WIFSIGNALED(status))
+        result.terminatingSignal = WTERMSIG(status);
+    return result;
+}
+
+std::vector<std::string> nonEmptyLines(const std::string& text)
+{
+    std::vector<std::string> lines;
+    std::istringstream stream(text);
+    std::string line;
+    while (std::getline(stream, line))
+        if (line.find_first_not_of(" \t\r") != std::string::npos)
+            lines.push_back(line);
+    return lines;
+}
+
+}  // namespace testing_support
