@@ -49,6 +49,8 @@ void writeOutputs(const CommandLine& line, const render::ProgressiveRenderer& re
 
 int runRender(const CommandLine& line)
 {
+    // From the start: Ctrl-C while the shader compiles must not kill the program unseen.
+    InterruptWatch interrupt;
     const scene::Scene scene = scene::parseSceneFile(line.scene);
     const bool writesFile = line.isBatch() || line.output.has_value();
     if (writesFile) {
@@ -72,7 +74,6 @@ int runRender(const CommandLine& line)
     render::ProgressiveRenderer renderer(scene, line.width, line.height, line.settings);
     const double setupSeconds = secondsSince(setupStart);
 
-    InterruptWatch interrupt;
     Progress progress(line.width, line.height, line.seconds, line.samplesPerPixel,
                       line.isBatch() && !line.quiet);
     const auto renderStart = std::chrono::steady_clock::now();

@@ -47,21 +47,40 @@ std::string joinFolders(const std::vector<fs::path>& folders)
 }
 
 // Reads the `// @bound R` and `// @lipschitz L` declarations of a user SDF file.
+// A declaration the renderer would silently ignore is an error: a dropped @lipschitz makes
+// an overestimating function tunnel, a dropped @bound only costs time but is as surely a typo.
 void readUserSdfDeclarations(UserSdf& user)
 {
     std::ifstream file(user.sourcePath);
     std::string line;
+    int lineNumber = 0;
     while (std::getline(file, line)) {
-        std::istringstream words(line);
-        std::string comment;
-        std::string key;
-        float value = 0.0f;
-        if (!(words >> comment >> key >> value) || comment != "//")
+        ++lineNumber;
+        const std::size_t at = line.find('@');
+        const std::size_t comment = line.find("//");
+        if (comment == std::string::npos || at == std::string::npos || at < comment)
             continue;
-        if (key == "@bound" && value > 0.0f && std::isfinite(value))
+        std::istringstream words(line.substr(at));
+        std::string key;
+        std::string valueText;
+        words >> key >> valueText;
+        if (key != "@bound" && key != "@lipschitz")
+            continue;
+        float value = 0.0f;
+        const char* last = valueText.data() + valueText.size();
+        const auto [end, error] = std::from_chars(valueText.data(), last, value);
+        const bool number = error == std::errc() && end == last && std::isfinite(value);
+        if (key == "@bound") {
+            if (!number || !(value > 0.0f))
+                throw SceneError(user.sourcePath.string(), lineNumber, valueText,
+                                 "a positive bounding radius after @bound");
             user.boundingRadius = value;
-        else if (key == "@lipschitz" && value >= 1.0f && std::isfinite(value))
+        } else {
+            if (!number || !(value >= 1.0f))
+                throw SceneError(user.sourcePath.string(), lineNumber, valueText,
+                                 "a Lipschitz factor of at least 1 after @lipschitz");
             user.lipschitz = value;
+        }
     }
 }
 
@@ -88,7 +107,8 @@ public:
         parseSectionKeywords(scene);
         if (!atEnd())
             fail("the end of the file (the object count says " +
-                 std::to_string(scene.objects.size()) + " objects)");
+                 std::to_string(scene.objects.size()) +
+                 (scene.objects.size() == 1 ? " object)" : " objects)"));
         return scene;
     }
 

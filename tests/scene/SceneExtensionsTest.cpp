@@ -321,6 +321,26 @@ TEST_F(UserSdfFiles, AreFoundInAShadersFolderBesideTheScene)
     EXPECT_EQ(parseUserSdf("blob").sourcePath, folder_ / "shaders" / "blob.glsl");
 }
 
+TEST_F(UserSdfFiles, DeclarationWrittenAgainstTheCommentMarkIsStillRead)
+{
+    write("blob.glsl", "//@bound 1.5\nfloat blob(vec3 p, vec3 x) { return length(p - x) - 1.0; }\n");
+    EXPECT_FLOAT_EQ(parseUserSdf("blob").boundingRadius.value_or(0.0f), 1.5f);
+}
+
+TEST_F(UserSdfFiles, UnusableDeclarationIsAnErrorNamingTheShaderFileAndLine)
+{
+    write("blob.glsl", "// A blob.\n// @lipschitz 0.5\n"
+                       "float blob(vec3 p, vec3 x) { return length(p - x) - 1.0; }\n");
+    try {
+        parseUserSdf("blob");
+        FAIL() << "a Lipschitz factor below 1 was accepted";
+    } catch (const SceneError& error) {
+        EXPECT_EQ(error.file(), (folder_ / "blob.glsl").string());
+        EXPECT_EQ(error.line(), 2);
+        EXPECT_EQ(error.token(), "0.5");
+    }
+}
+
 TEST(UserSdfDeclarations, TheProjectKnotStepsByHalfItsDistance)
 {
     const Scene scene = parseSceneFile(testing_support::sourceDirectory() / "scenes" / "scene4.in");
