@@ -43,10 +43,11 @@ Surface surfaceAt(int object, vec3 p, vec3 normal, vec3 wo, float insideSign, fl
 // normal instead.
 // `facingNormal` points to the side the ray arrived from (Surface.facingNormal, which the
 // BSDFs sampled against): a direction on that side stays in the region the ray travelled
-// in, one on the other side crosses into the other region. Near an edge or a corner the
-// offset point can land beyond another surface, in a solid the ray never entered (an offset
-// from a room's wall, out through the next wall, would then see the sky): the offset is
-// retried once, twice as far, and otherwise the path ends there.
+// in, one on the other side crosses into the other region. The offset point can land
+// beyond another surface, in a solid the ray never entered: near an edge or a corner (an
+// offset from a room's wall, out through the next wall, would then see the sky), or along a
+// grazing direction inside a concave surface. Then the offset is retried along the normal,
+// once, and twice as far; failing that the path ends there.
 // `containing` receives the object the new ray starts inside (-1 outside every object).
 bool spawn(vec3 p, vec3 facingNormal, vec3 direction, float tolerance, inout float insideSign,
            out vec3 origin, out int containing)
@@ -59,9 +60,11 @@ bool spawn(vec3 p, vec3 facingNormal, vec3 direction, float tolerance, inout flo
     float clearance = 2.0 * tolerance;
     float along = clearance / max(abs(cosLeaving), kMinimumCosine);
     float normalPart = max(0.0, clearance - along * abs(cosLeaving));
-    for (int attempt = 1; attempt <= 2; ++attempt) {
-        float scale = float(attempt);
-        origin = p + direction * (scale * along) + facingNormal * (side * scale * normalPart);
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        if (attempt == 0)
+            origin = p + direction * along + facingNormal * (side * normalPart);
+        else
+            origin = p + facingNormal * (side * float(attempt) * clearance);
         if (expectedSign * sceneDistanceAndObject(origin, containing) > 0.0) {
             insideSign = expectedSign;
             if (insideSign > 0.0)
@@ -165,8 +168,11 @@ bool continuePath(inout PathState path)
     Surface s = surfaceAt(hit.object, p, normal, wo, insideSign, footprint, tolerance);
 
 #if HAS_SPHERE_LIGHTS
-    // Emission, seen from outside the sphere.
-    if (s.lightIndex >= 0 && s.entering) {
+    // Emission, seen from outside the sphere, only along rays that truly meet it: the march
+    // accepts rays passing within the hit tolerance, which would widen every light by that
+    // much (bright outlines), and light sampling never picks those directions either.
+    if (s.lightIndex >= 0 && s.entering &&
+        rayMeetsSphereLight(path.origin, path.direction, s.lightIndex)) {
         float weight = 1.0;
         if (!path.previousWasDelta)
             weight = uUseMis != 0

@@ -41,6 +41,16 @@ float sphereLightPdf(int light, vec3 p)
     return lightSelectionProbability(light) * uniformConePdf(oneMinusCosThetaMax);
 }
 
+// True when the ray from `origin` along unit `direction` meets the light's sphere.
+bool rayMeetsSphereLight(vec3 origin, vec3 direction, int light)
+{
+    vec3 toCenter = lightPosition(light) - origin;
+    float along = dot(direction, toCenter);
+    float radius = lightRadius(light);
+    vec3 closest = toCenter - along * direction;
+    return along > 0.0 && dot(closest, closest) <= radius * radius;
+}
+
 // Distance from p along unit `direction` to the near side of the light's sphere, in the form
 // c / (b + sqrt(b^2 - c)) that keeps its digits for a far, tiny sphere.
 float distanceToSphereLight(vec3 p, vec3 direction, int light)

@@ -117,6 +117,7 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
         } else if (argument == "--samples-per-frame") {
             line.settings.samplesPerFrame =
                 positiveInteger(value(argument), "--samples-per-frame", 1 << 16);
+            line.samplesPerFrameGiven = true;
         } else if (argument == "--band-seconds") {
             double seconds = 0.0;
             const std::string text = value(argument);
@@ -183,7 +184,8 @@ output:
                         variance of the mean
   --headless            render with OSMesa even when a display is available
   --seed N              random seed (default 1)
-  --samples-per-frame N paths per pixel per frame (default 1); fewer, longer draws
+  --samples-per-frame N paths per pixel per frame (default: chosen so that a frame takes
+                        about 0.5 s in a batch render, 0.15 s in a window, at most 16)
   --band-seconds S      draw frames in bands of about S seconds each, so a render stops
                         or a window responds between them (default 0.25; 0: whole frames)
   --quiet               no progress line

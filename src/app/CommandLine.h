@@ -20,6 +20,8 @@ struct CommandLine {
     std::optional<std::filesystem::path> output;
     std::optional<std::filesystem::path> statisticsOutput;
     bool headless = false;
+    // --samples-per-frame was given: keep it; otherwise the render picks it (RenderCommand).
+    bool samplesPerFrameGiven = false;
     bool quiet = false;
     render::RenderSettings settings;
 

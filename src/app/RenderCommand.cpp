@@ -85,16 +85,26 @@ int runRender(const CommandLine& line)
         return !interrupt.requested() && !windowClosed && timeLeft();
     };
 
+    // Several paths per pixel per frame keep SIMD lanes busy (a pixel whose path ends starts
+    // the next at once) and the per-draw overhead small; a window still wants frequent
+    // frames. Unless told, the count follows the measured cost (the first frame, which
+    // includes code generation, is not a measure).
+    const double targetFrameSeconds = context->hasWindow() && !line.isBatch() ? 0.15 : 0.5;
+    int samplesPerFrame = line.settings.samplesPerFrame;
     auto lastTitle = std::chrono::steady_clock::now();
     while (keepGoing()) {
         if (line.samplesPerPixel && renderer.samplesPerPixel() >= *line.samplesPerPixel)
             break;
-        int samples = line.settings.samplesPerFrame;
+        int samples = samplesPerFrame;
         if (line.samplesPerPixel)
             samples = std::min(samples, *line.samplesPerPixel - renderer.samplesPerPixel());
         if (!renderer.renderFrame(keepGoing, samples))
             break;
         progress.update(renderer.samplesPerPixel());
+        if (!line.samplesPerFrameGiven && renderer.frames() > 1 &&
+            renderer.lastSecondsPerSample() > 0.0)
+            samplesPerFrame = std::clamp(
+                static_cast<int>(targetFrameSeconds / renderer.lastSecondsPerSample()), 1, 16);
         if (context->hasWindow()) {
             const platform::DrawableSize size = context->windowFramebufferSize();
             renderer.displayToWindow(size.width, size.height);

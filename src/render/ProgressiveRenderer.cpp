@@ -137,8 +137,10 @@ bool ProgressiveRenderer::renderFrame(const std::function<bool()>& keepGoing, in
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     gl::throwOnGlError("rendering a frame");
     targets_.swap();
+    const double frameSeconds = secondsSince(frameStart);
     if (frames_ == 0)
-        firstFrameSeconds_ = secondsSince(frameStart);
+        firstFrameSeconds_ = frameSeconds;
+    lastSecondsPerSample_ = frameSeconds / samples;
     ++frames_;
     samplesPerPixel_ += samples;
     return true;

@@ -59,6 +59,8 @@ public:
     double compileSeconds() const { return program_->compileSeconds(); }
     // Duration of the first frame, which includes the driver's code generation.
     double firstFrameSeconds() const { return firstFrameSeconds_; }
+    // Duration of the last frame completed, per sample per pixel it added.
+    double lastSecondsPerSample() const { return lastSecondsPerSample_; }
 
 private:
     void buildProgram();
@@ -78,6 +80,7 @@ private:
     int samplesPerPixel_ = 0;
     int rowsPerBand_ = 0;
     double firstFrameSeconds_ = 0.0;
+    double lastSecondsPerSample_ = 0.0;
 };
 
 // Largest width or height this GL renders to; throws with a clear message for sizes beyond.
