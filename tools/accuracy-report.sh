@@ -6,14 +6,14 @@
 #   tools/accuracy-report.sh                       full configuration
 #   ACCURACY_SCALE=quick tools/accuracy-report.sh  quick configuration, to try the pipeline
 #
-# The full configuration renders at 320x240: references of 4096 spp, convergence to 512 spp,
-# 256 spp per accuracy-setting value, budgets of 1, 10 and 60 s. On 2 cores with Mesa
-# llvmpipe, shared with other work (load 4 to 5), it takes about 8 hours, of which about 3
-# render the references (scene6 alone about 2 hours); with the references cached, about 5.
-# Estimated from the quick run's measured throughput (0.12 to 0.59 Mpaths/s per scene at
-# 80x60, 20 to 25 % less at 320x240). The quick configuration renders at 80x60 (references
-# of 1024 spp, convergence to 128, 128 spp per setting value, budgets of 0.5, 2 and 8 s) and
-# takes about 12 minutes.
+# The full configuration renders the convergence and settings sweeps at 160x120
+# (references of 2048 spp, convergence to 512 spp, 256 spp per accuracy-setting value) and
+# the equal-time view at 320x240 (budgets of 1, 10 and 60 s, against references of 2048
+# spp at that size). On 2 cores with Mesa llvmpipe and nothing else running it takes about
+# two hours and a half, most of it the references (scene6 alone about 40 minutes);
+# ACCURACY_* below give a longer or shorter run. The quick configuration renders at 80x60
+# (references of 1024 spp, convergence to 128, 128 spp per setting value, budgets of 0.5,
+# 2 and 8 s) and takes about 12 minutes.
 #
 # Variables (each optional):
 #   ACCURACY_SCALE          full (default) or quick
@@ -35,7 +35,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 scale="${ACCURACY_SCALE:-full}"
 case "$scale" in
   full)
-    size="320 240"; reference_spp=4096; max_spp=512; settings_spp=256
+    size="160 120"; reference_spp=2048; max_spp=512; settings_spp=256
     budgets="1,10,60"; budget_size="320 240"
     ;;
   quick)
@@ -60,10 +60,10 @@ if [ "$scale" = quick ]; then
   note+=" $reference_spp spp, convergence to $max_spp spp, $settings_spp spp per setting value,"
   note+=" budgets of ${budgets//,/, } s at ${budget_size/ /x}. It proves the pipeline end to"
   note+=" end; its numbers are not those of the full configuration"
-  note+=" (\`tools/accuracy-report.sh\`: 320x240, references of 4096 spp, budgets of 1, 10 and"
-  note+=" 60 s), which replaces this page when it is run. At 80x60 a pixel's footprint is 4x"
-  note+=" that at 320x240, so every tolerance counted in footprints is 4x larger in the scene,"
-  note+=" and each error is averaged over 16x fewer pixels."
+  note+=" (\`tools/accuracy-report.sh\`: 160x120 sweeps and references of 2048 spp, budgets of"
+  note+=" 1, 10 and 60 s at 320x240), which replaces this page when it is run. At 80x60 a"
+  note+=" pixel's footprint is 2x that at 160x120, so every tolerance counted in footprints is 2x"
+  note+=" larger in the scene, and each error is averaged over 4x fewer pixels."
 fi
 cache="${ACCURACY_CACHE:-$build/accuracy-cache}"
 if [ -n "${ACCURACY_SCENES:-}" ]; then

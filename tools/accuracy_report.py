@@ -884,7 +884,7 @@ def write_report(args):
     out.append("## Regenerating\n")
     out.append(
         "```sh\n"
-        "tools/accuracy-report.sh                       # full: 320x240, every classic scene\n"
+        "tools/accuracy-report.sh                       # full: 160x120 sweeps, 320x240 budgets\n"
         "ACCURACY_SCALE=quick tools/accuracy-report.sh  # minutes: 80x60, low spp\n"
         "```\n\n"
         "The script installs what is missing (python3-matplotlib among it), builds "
