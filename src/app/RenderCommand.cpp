@@ -52,6 +52,17 @@ int runRender(const CommandLine& line)
     // From the start: Ctrl-C while the shader compiles must not kill the program unseen.
     InterruptWatch interrupt;
     const scene::Scene scene = scene::parseSceneFile(line.scene);
+    // Every texture must be readable before a window opens or a frame is rendered.
+    for (const scene::Pigment& pigment : scene.pigments)
+        if (pigment.kind == scene::PigmentKind::Texture) {
+            try {
+                io::checkReadableImage(pigment.texturePath);
+            } catch (const std::exception& error) {
+                throw std::runtime_error(line.scene.string() + ":" +
+                                         std::to_string(pigment.line) + ": texture '" +
+                                         pigment.textureName + "': " + error.what());
+            }
+        }
     const bool writesFile = line.isBatch() || line.output.has_value();
     if (writesFile) {
         io::checkWritableFormat(line.outputPath());

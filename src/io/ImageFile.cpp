@@ -115,6 +115,14 @@ void checkWritableFormat(const fs::path& path)
                                  ": unknown image format (use .ppm, .png, .exr or .pfm)");
 }
 
+void checkReadableImage(const fs::path& path)
+{
+    auto input = OIIO::ImageInput::open(path.string());
+    if (!input)
+        throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());
+    input->close();
+}
+
 Image readImage(const fs::path& path)
 {
     auto input = OIIO::ImageInput::open(path.string());

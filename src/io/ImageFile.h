@@ -17,6 +17,10 @@ void writeImage(const std::filesystem::path& path, const Image& image);
 // Throws std::runtime_error unless OpenImageIO can write the format `path`'s extension names.
 void checkWritableFormat(const std::filesystem::path& path);
 
+// Throws std::runtime_error naming the file unless OpenImageIO can open it as an image (its
+// header is read, not its pixels).
+void checkReadableImage(const std::filesystem::path& path);
+
 // Reads any format OpenImageIO knows as float RGB(A) (8-bit data scaled to [0, 1]).
 Image readImage(const std::filesystem::path& path);
 

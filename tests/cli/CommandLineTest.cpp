@@ -149,6 +149,23 @@ INSTANTIATE_TEST_SUITE_P(
         return std::string(info.param.name);
     });
 
+TEST_F(CommandLine, UnreadableTextureIsOneLineNamingThePigmentAndWritesNothing)
+{
+    write("broken.ppm", "this is not an image");
+    const fs::path scene = write("bad.in", "0 0 5\n0 0 0\n0 1 0\n45\n0\n1\ntexmap broken.ppm 1\n"
+                                           "1\n0 0 0 0 0 0 0\n1\n0 0 sphere 0 0 0 1\n");
+    const ProcessResult result =
+        run({scene.string(), "32", "24", "--spp", "4", "--output", "out.png"});
+    ASSERT_TRUE(result.exited) << describe(result);
+    EXPECT_NE(result.exitStatus, 0) << describe(result);
+    const auto lines = nonEmptyLines(result.standardError);
+    ASSERT_EQ(lines.size(), 1u) << describe(result);
+    EXPECT_NE(lines[0].find(scene.string() + ":7:"), std::string::npos) << lines[0];
+    EXPECT_NE(lines[0].find("broken.ppm"), std::string::npos) << lines[0];
+    const auto files = filesInFolder();
+    EXPECT_EQ(std::count(files.begin(), files.end(), "out.png"), 0) << "no output file";
+}
+
 TEST_F(CommandLine, MissingSceneFileIsOneLineAndNonZeroStatus)
 {
     const ProcessResult result = run({"no-such-scene.in", "32", "24", "--spp", "1"});
