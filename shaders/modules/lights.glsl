@@ -83,16 +83,18 @@ vec3 shadowTransmittance(vec3 origin, vec3 direction, float maxDistance, float i
                          float tolerance, int target)
 {
     vec3 transmittance = vec3(1.0);
+    RayCulling culling = sceneRayCulling(origin, direction, tolerance, 0.0);
+    float clearDistance = min(maxDistance, culling.escapeDistance);
     float t = 0.0;
     for (int step = 0; step < uMaxMarchSteps; ++step) {
-        if (t >= maxDistance)
+        if (t >= clearDistance)
             return transmittance;
         vec3 p = origin + t * direction;
-        float radius = insideSign * sceneDistance(p);
+        float radius = insideSign * sceneDistanceCulled(p, culling.mask);
         if (radius < tolerance) {
 #if HAS_NULL_INTERFACES || HAS_SPHERE_LIGHTS
             int nearest;
-            sceneDistanceAndObject(p, nearest);
+            sceneDistanceAndObjectCulled(p, culling.mask, nearest);
             if (nearest == target)
                 return transmittance;
 #endif

@@ -168,3 +168,19 @@ float sceneDistanceAndObject(vec3 p, out int nearest)
     }
     return d;
 }
+
+// The general shader culls nothing (ray_culling.glsl): every object is evaluated everywhere.
+RayCulling sceneRayCulling(vec3 origin, vec3 direction, float tolerance0, float toleranceGrowth)
+{
+    return noRayCulling();
+}
+
+float sceneDistanceCulled(vec3 p, uint mask)
+{
+    return sceneDistance(p);
+}
+
+float sceneDistanceAndObjectCulled(vec3 p, uint mask, out int nearest)
+{
+    return sceneDistanceAndObject(p, nearest);
+}

@@ -37,10 +37,20 @@ struct MarchHit {
     int object;
 };
 
+// The pieces of the scene the ray may come near, and how far it may meet any (see
+// ray_culling.glsl).
+RayCulling rayCulling(vec3 origin, vec3 direction, RayCone cone)
+{
+    return sceneRayCulling(origin, direction, hitTolerance(cone, 0.0),
+                           uHitTolerance * cone.spread);
+}
+
 // `insideSign` is -1 when the ray starts inside the solid (inside glass): the distance is
 // negated so the march heads for the boundary from within.
 MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone)
 {
+    RayCulling culling = rayCulling(origin, direction, cone);
+    float farDistance = min(uFarDistance, culling.escapeDistance);
     float omega = uOverRelaxation;
     float t = 0.0;
     float stepLength = 0.0;
@@ -49,10 +59,18 @@ MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone
     MarchHit best = MarchHit(false, 0.0, 0.0, -1);
 
     for (int step = 0; step < uMaxMarchSteps; ++step) {
-        if (t > uFarDistance)
-            return MarchHit(false, t, 0.0, -1);
+        if (t >= farDistance) {
+            // Escaped, unless a relaxed step jumped past the part of the ray its safe sphere
+            // covered: a surface may lie there. Then it is undone as a failed relaxation.
+            if (t - stepLength + previousRadius >= farDistance)
+                return MarchHit(false, t, 0.0, -1);
+            stepLength -= omega * stepLength;
+            omega = 1.0;
+            t += stepLength;
+            continue;
+        }
         int object;
-        float distance = sceneDistanceAndObject(origin + t * direction, object);
+        float distance = sceneDistanceAndObjectCulled(origin + t * direction, culling.mask, object);
         float signedRadius = insideSign * distance;
         float radius = abs(signedRadius);
 

@@ -132,6 +132,8 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
                 nonNegativeInteger(value(argument), "--rr-depth", 1024);
         } else if (argument == "--no-mis") {
             line.settings.multipleImportanceSampling = false;
+        } else if (argument == "--no-culling") {
+            line.settings.rayCulling = false;
         } else if (argument == "--fresnel") {
             const std::string model = value(argument);
             if (model == "schlick")
@@ -206,6 +208,8 @@ shader:
   --print-shader        print the fragment shader assembled for SCENE and exit
   --no-specialize       use the general shader with every feature instead of one built
                         for the scene
+  --no-culling          march every ray against every object (culling the objects a ray
+                        cannot come near is exact; this only shows what it saves)
 
   --help                this text
   --version             the program's version

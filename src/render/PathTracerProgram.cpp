@@ -36,6 +36,7 @@ ShaderSource assemblePathTracerSource(const SceneShaderCode& code, const fs::pat
     module("sdf_primitives.glsl");
     module("csg_operators.glsl");
     module("scene_data.glsl");
+    module("ray_culling.glsl");
     if (code.features.transforms)
         module("shape_transforms.glsl");
     if (!code.userSdfFiles.empty()) {

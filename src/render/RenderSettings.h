@@ -23,6 +23,9 @@ struct RenderSettings {
     // Scattering events before Russian roulette may end a path (the seed: 4).
     int russianRouletteDepth = 4;
     bool multipleImportanceSampling = true;
+    // Rays skip the objects they cannot come near (shaders/modules/ray_culling.glsl). Exact:
+    // it changes the time a march takes, not what it meets.
+    bool rayCulling = true;
     FresnelModel dielectricFresnel = FresnelModel::Schlick;
     ShaderVariant variant = ShaderVariant::Specialized;
     std::uint64_t seed = 1;

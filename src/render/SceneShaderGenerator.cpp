@@ -3,7 +3,9 @@
 #include "scene/SceneBounds.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace render {
@@ -91,6 +93,37 @@ public:
         functions_ << "float " << name << "(vec3 p)\n{\n" << body << "}\n\n";
         return name;
     }
+
+    // A top-level polyhedron whose planes a ray culls one by one: its function takes the
+    // ray's culling mask, plane i counting only where bit planeBits[i] is set (the unculled
+    // scene passes every bit). Returns the function's name; `planeSlots` receives where
+    // each normalised local plane lies.
+    std::string emitCullablePolyhedron(const Shape& shape, const Polyhedron& polyhedron,
+                                       const std::vector<std::uint32_t>& planeBits,
+                                       std::vector<int>& planeSlots)
+    {
+        const std::string name = "shape" + std::to_string(nextFunction_++);
+        std::string frame;
+        if (shape.transform)
+            frame = std::to_string(allocateTransform(*shape.transform));
+        std::ostringstream body;
+        body << "    vec3 q = " << (frame.empty() ? "p" : "toLocalPoint(p, " + frame + ")")
+             << ";\n    float d = FLOAT_MAX;\n";
+        planeSlots.clear();
+        for (std::size_t i = 0; i < polyhedron.planes.size(); ++i) {
+            const glm::vec4& plane = polyhedron.planes[i];
+            const int s = allocate({plane / glm::length(glm::vec3(plane))});
+            planeSlots.push_back(s);
+            body << "    d = min(d, (mask & " << planeBits[i] << "u) != 0u ? sdHalfSpace(q, "
+                 << slot(s) << ") : FLOAT_MAX);\n";
+        }
+        body << "    return " << (frame.empty() ? "d" : "toWorldDistance(d, " + frame + ")")
+             << ";\n";
+        functions_ << "float " << name << "(vec3 p, uint mask)\n{\n" << body.str() << "}\n\n";
+        return name;
+    }
+
+    int allocateValue(const glm::vec4& value) { return allocate({value}); }
 
     // --- general: instructions for shape_interpreter.glsl ---------------------------------
 
@@ -274,21 +307,109 @@ bool worthBounding(const SceneObject& object)
            std::holds_alternative<CsgNode>(object.shape.geometry);
 }
 
+// A part of the scene's union that a ray is tested against before it is marched
+// (shaders/modules/ray_culling.glsl): a bounding half-space or ball in uShapeParameters, and
+// the bit that stands for it in the ray's mask.
+struct CullingPiece {
+    bool halfSpace;
+    int slot;
+    std::uint32_t bit;
+};
+
+constexpr int kCullingBits = 32;
+
+// A plane n.x + w <= 0 (unit n) of a shape's local space, in world space, where the shape
+// is placed by world = R (s local) + T: n' = R n, w' = s w - n'.T.
+glm::vec4 worldPlane(const glm::vec4& localPlane, const std::optional<Transform>& transform)
+{
+    if (!transform)
+        return localPlane;
+    const glm::vec3 normal = transform->rotation * glm::vec3(localPlane);
+    return glm::vec4(normal, transform->scale * localPlane.w - glm::dot(normal, transform->translation));
+}
+
+// The half-space an infinite cone lies in, scaled by how much slower than the distance to
+// that plane the cone's distance bound dot((a, b), (|p.xz|, p.y)) may grow: the cone opens
+// downwards (b > 0) below its apex, upwards (b < 0) above it. None when it opens wider
+// than a half-space (a < 0) or is flat.
+std::optional<glm::vec4> coneHalfSpace(const Cone& cone, const std::optional<Transform>& transform)
+{
+    const glm::vec2 unit = glm::normalize(cone.slope);
+    if (unit.x < 0.0f || unit.y == 0.0f)
+        return std::nullopt;
+    const float side = unit.y > 0.0f ? 1.0f : -1.0f;
+    const glm::vec4 local(0.0f, side, 0.0f, -side * cone.apex.y);
+    return std::abs(unit.y) * worldPlane(local, transform);
+}
+
 std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compiler)
 {
     struct Entry {
         std::size_t index;
         std::string function;
-        int boundSlot;  // -1: evaluated everywhere
+        bool takesMask;  // a polyhedron's function, culled plane by plane
+        int boundSlot;   // -1: evaluated everywhere
+        std::vector<CullingPiece> pieces;  // empty: never culled
     };
     std::vector<Entry> cheap;
     std::vector<Entry> bounded;
+    int nextBit = 0;
+    auto takeBits = [&](std::size_t count) {
+        std::vector<std::uint32_t> bits;
+        if (nextBit + static_cast<int>(count) > kCullingBits)
+            return bits;
+        for (std::size_t i = 0; i < count; ++i)
+            bits.push_back(1u << nextBit++);
+        return bits;
+    };
+    bool everyObjectCulled = true;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
-        Entry entry{i, compiler.emitFunction(object.shape), -1};
-        const ShapeBound bound = boundShape(object.shape);
+        const Shape& shape = object.shape;
+        const ShapeBound bound = boundShape(shape);
+        const int boundSlot = bound.finite ? compiler.allocateBound(bound) : -1;
+        Entry entry{i, {}, false, -1, {}};
+        const auto* polyhedron = std::get_if<Polyhedron>(&shape.geometry);
+        const std::vector<std::uint32_t> planeBits =
+            polyhedron ? takeBits(polyhedron->planes.size()) : std::vector<std::uint32_t>{};
+        if (polyhedron && !planeBits.empty()) {
+            std::vector<int> planeSlots;
+            entry.function =
+                compiler.emitCullablePolyhedron(shape, *polyhedron, planeBits, planeSlots);
+            entry.takesMask = true;
+            for (std::size_t k = 0; k < planeSlots.size(); ++k) {
+                // The distance function's own normalised plane where it is already in world
+                // space.
+                const int cullSlot =
+                    shape.transform
+                        ? compiler.allocateValue(worldPlane(
+                              polyhedron->planes[k] / glm::length(glm::vec3(polyhedron->planes[k])),
+                              shape.transform))
+                        : planeSlots[k];
+                entry.pieces.push_back({true, cullSlot, planeBits[k]});
+            }
+        } else {
+            entry.function = compiler.emitFunction(shape);
+            std::optional<CullingPiece> piece;
+            const auto* cone = std::get_if<Cone>(&shape.geometry);
+            if (bound.finite) {
+                piece = CullingPiece{false, boundSlot, 0u};
+            } else if (cone) {
+                if (const auto plane = coneHalfSpace(*cone, shape.transform))
+                    piece = CullingPiece{true, compiler.allocateValue(*plane), 0u};
+            }
+            if (piece) {
+                const std::vector<std::uint32_t> bit = takeBits(1);
+                if (!bit.empty()) {
+                    piece->bit = bit[0];
+                    entry.pieces.push_back(*piece);
+                }
+            }
+        }
+        if (entry.pieces.empty())
+            everyObjectCulled = false;
         if (worthBounding(object) && bound.finite) {
-            entry.boundSlot = compiler.allocateBound(bound);
+            entry.boundSlot = boundSlot;
             bounded.push_back(entry);
         } else {
             cheap.push_back(entry);
@@ -297,31 +418,81 @@ std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compile
     auto boundTest = [](int boundSlot) {
         return "sdSphere(p - " + slot(boundSlot) + ".xyz, " + slot(boundSlot) + ".w) < d";
     };
+    // An object's bit test in the culled functions: a polyhedron tests its planes itself.
+    auto objectBit = [](const Entry& entry) -> std::string {
+        if (entry.takesMask || entry.pieces.empty())
+            return {};
+        return "(mask & " + std::to_string(entry.pieces[0].bit) + "u) != 0u";
+    };
+    auto call = [](const Entry& entry, bool culled) {
+        if (!entry.takesMask)
+            return entry.function + "(p)";
+        return entry.function + (culled ? "(p, mask)" : "(p, 0xffffffffu)");
+    };
 
     std::ostringstream out;
     out << compiler.functions();
-    out << "// The scene: the union of its objects.\n\n";
-    out << "// Cheap objects first, so that bounded expensive ones are skipped as often as "
-           "possible.\n";
-    out << "float sceneDistance(vec3 p)\n{\n    float d = FLOAT_MAX;\n";
-    for (const Entry& entry : cheap)
-        out << "    d = min(d, " << entry.function << "(p));\n";
-    for (const Entry& entry : bounded)
-        out << "    if (" << boundTest(entry.boundSlot) << ")\n        d = min(d, "
-            << entry.function << "(p));\n";
-    out << "    return d;\n}\n\n";
+    out << "// The scene: the union of its objects. Cheap objects first, so that bounded "
+           "expensive\n// ones are skipped as often as possible. The culled forms leave out "
+           "the pieces a ray's\n// mask clears (ray_culling.glsl).\n\n";
+    for (const bool culled : {false, true}) {
+        const std::string suffix = culled ? "Culled" : "";
+        const std::string maskParameter = culled ? ", uint mask" : "";
+        out << "float sceneDistance" << suffix << "(vec3 p" << maskParameter
+            << ")\n{\n    float d = FLOAT_MAX;\n";
+        for (const Entry& entry : cheap) {
+            const std::string bit = culled ? objectBit(entry) : "";
+            if (bit.empty())
+                out << "    d = min(d, " << call(entry, culled) << ");\n";
+            else
+                out << "    d = min(d, " << bit << " ? " << call(entry, culled)
+                    << " : FLOAT_MAX);\n";
+        }
+        for (const Entry& entry : bounded) {
+            const std::string bit = culled ? objectBit(entry) : "";
+            out << "    if (" << (bit.empty() ? "" : bit + " && ") << boundTest(entry.boundSlot)
+                << ")\n        d = min(d, " << call(entry, culled) << ");\n";
+        }
+        out << "    return d;\n}\n\n";
 
-    out << "float sceneDistanceAndObject(vec3 p, out int nearest)\n{\n";
-    out << "    float d = FLOAT_MAX;\n    nearest = -1;\n    float candidate;\n";
-    for (const Entry& entry : cheap)
-        out << "    candidate = " << entry.function << "(p);\n"
-            << "    if (candidate < d) { d = candidate; nearest = " << entry.index << "; }\n";
-    for (const Entry& entry : bounded)
-        out << "    if (" << boundTest(entry.boundSlot) << ") {\n"
-            << "        candidate = " << entry.function << "(p);\n"
-            << "        if (candidate < d) { d = candidate; nearest = " << entry.index
-            << "; }\n    }\n";
-    out << "    return d;\n}\n";
+        out << "float sceneDistanceAndObject" << suffix << "(vec3 p" << maskParameter
+            << ", out int nearest)\n{\n";
+        out << "    float d = FLOAT_MAX;\n    nearest = -1;\n    float candidate;\n";
+        for (const Entry& entry : cheap) {
+            const std::string bit = culled ? objectBit(entry) : "";
+            if (bit.empty())
+                out << "    candidate = " << call(entry, culled) << ";\n";
+            else
+                out << "    candidate = " << bit << " ? " << call(entry, culled)
+                    << " : FLOAT_MAX;\n";
+            out << "    if (candidate < d) { d = candidate; nearest = " << entry.index << "; }\n";
+        }
+        for (const Entry& entry : bounded) {
+            const std::string bit = culled ? objectBit(entry) : "";
+            out << "    if (" << (bit.empty() ? "" : bit + " && ") << boundTest(entry.boundSlot)
+                << ") {\n"
+                << "        candidate = " << call(entry, culled) << ";\n"
+                << "        if (candidate < d) { d = candidate; nearest = " << entry.index
+                << "; }\n    }\n";
+        }
+        out << "    return d;\n}\n\n";
+    }
+
+    out << "RayCulling sceneRayCulling(vec3 origin, vec3 direction, float tolerance0,\n"
+           "                           float toleranceGrowth)\n{\n"
+           "    if (uRayCulling == 0 || !(toleranceGrowth < kMaxCullableToleranceGrowth))\n"
+           "        return noRayCulling();\n"
+           "    RayCulling culling = RayCulling(0u, 0.0);\n";
+    for (const std::vector<Entry>* entries : {&cheap, &bounded})
+        for (const Entry& entry : *entries)
+            for (const CullingPiece& piece : entry.pieces)
+                out << "    " << (piece.halfSpace ? "cullByHalfSpace" : "cullByBall")
+                    << "(culling, " << piece.bit << "u, " << slot(piece.slot)
+                    << ", origin, direction, tolerance0, toleranceGrowth);\n";
+    if (!everyObjectCulled)
+        out << "    // Some objects have no bound to cull by: the ray may meet them anywhere.\n"
+               "    culling.escapeDistance = FLOAT_MAX;\n";
+    out << "    return culling;\n}\n";
     return out.str();
 }
 

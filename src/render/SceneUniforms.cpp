@@ -187,6 +187,7 @@ void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
     setInt(program, "uMaxBounces", settings.maxBounces);
     setInt(program, "uRussianRouletteDepth", settings.russianRouletteDepth);
     setInt(program, "uUseMis", settings.multipleImportanceSampling ? 1 : 0);
+    setInt(program, "uRayCulling", settings.rayCulling ? 1 : 0);
     setInt(program, "uExactFresnel", settings.dielectricFresnel == FresnelModel::Exact ? 1 : 0);
 }
 

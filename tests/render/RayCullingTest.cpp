@@ -1,0 +1,128 @@
+// Per-ray culling (shaders/modules/ray_culling.glsl) is exact: a render with it agrees with a
+// render without it (--no-culling) within noise, for every kind of piece a scene can be
+// culled by and the rays it is hardest for (grazing, inside a solid, specular chains whose
+// tolerance grows, a field of view so wide that culling is switched off). Independent seeds,
+// so the noise-aware comparison of the regression tests applies.
+#include "support/ImageComparison.h"
+#include "support/RenderRun.h"
+
+#include <gtest/gtest.h>
+
+namespace render_tests {
+namespace {
+
+using namespace testing_support;
+
+struct CullingCase {
+    std::string name;
+    std::string scene;
+};
+
+void PrintTo(const CullingCase& culling, std::ostream* out)
+{
+    *out << culling.name;
+}
+
+// A closed room of six planes, one wall a transformed polyhedron, with a box, a torus, a cone
+// and a cylinder, a point light and a sphere light; the camera in a corner.
+const char* const kRoom = R"(
+-2.5 2.5 2.5   0 0.5 0   0 1 0   70
+1
+0 3 0   6 6 6
+3
+solid 0.8 0.8 0.8
+solid 0.8 0.3 0.2
+solid 0.2 0.4 0.8
+3
+0 0 0  0 0 0 0
+0 0 0  40 0 0 0
+8 8 8  0 0 0 0
+7
+0 0 polyhedron 5  0 1 0 0  0 -1 0 4  1 0 0 3  0 0 1 3  0 0 -1 3
+2 0 translate 3 0 0 rotate 0 0 1 90 polyhedron 1  0 1 0 0
+1 1 translate 1 0.5 -1 rotate 0 1 0 30 box 0 0 0  0.5 0.5 0.5
+2 0 torus -1 0.3 -1  0.6 0.25
+1 1 cone 1.5 1.5 1.5  1 1.5
+2 0 cylinder -1.5 0.5 1.5  0.4 0.5
+0 2 sphere 0 3.5 0  0.3
+)";
+
+// An open scene seen from a hair above the floor: rays graze it up to the horizon; a cone
+// opening downwards, a sphere and a box above it.
+const char* const kHorizon = R"(
+0 0.05 6   0 0.3 0   0 1 0   50
+1
+-3 6 4   60 60 60
+2
+checker 0.9 0.9 0.9  0.2 0.2 0.2  0.5
+solid 0.8 0.3 0.2
+1
+0 0 0  0 0 0 0
+4
+0 0 polyhedron 1  0 1 0 0
+1 0 sphere -1 0.5 0  0.5
+1 0 cone 1.2 1 -1  1 2
+1 0 box 0 0.2 -3  2 0.2 0.2
+)";
+
+// The camera inside a glass sphere, mirror and Lambertian spheres outside it, under the
+// sky: rays start inside a solid, and mirror chains keep their growing tolerance.
+const char* const kInsideGlass = R"(
+0 0 0   0 0 -1   0 1 0   60
+0
+2
+solid 1 1 1
+solid 0.9 0.6 0.3
+3
+0 0 0  0 0 1 1.5
+0 0 0  0 1 0 0
+0 0 0  0 0 0 0
+4
+0 0 sphere 0 0 0  1.5
+0 1 sphere -1 0 -4  1
+1 2 sphere 1.5 0.5 -3.5  0.7
+1 2 polyhedron 1  0 1 0 1.6
+)";
+
+// A field of view of 175 degrees: the camera's cone widens faster than culling's margins
+// allow, so camera rays are not culled while the rays after them are.
+const char* const kWideAngle = R"(
+0 1 3   0 1 0   0 1 0   175
+1
+0 4 0   30 30 30
+1
+solid 0.8 0.8 0.8
+1
+0 0 0  0 0 0 0
+3
+0 0 polyhedron 2  0 1 0 0  0 0 1 2
+0 0 sphere 0 1 0  0.7
+0 0 box 1.5 0.5 0.5  0.3 0.5 0.3
+)";
+
+class RayCulling : public ::testing::TestWithParam<CullingCase> {};
+
+TEST_P(RayCulling, RenderAgreesWithTheUnculledRender)
+{
+    const scene::Scene scene = sceneFromText(GetParam().scene, GetParam().name + ".in");
+    render::RenderSettings culled = settingsWithSeed(21);
+    render::RenderSettings unculled = settingsWithSeed(22);
+    unculled.rayCulling = false;
+    const RenderedImage withCulling = renderScene(scene, 64, 48, 64, culled);
+    const RenderedImage withoutCulling = renderScene(scene, 64, 48, 64, unculled);
+    const Comparison comparison = compareImages(withCulling, withoutCulling);
+    EXPECT_TRUE(comparison.passed())
+        << GetParam().name << ": culled against unculled:\n" << comparison.describe();
+}
+
+INSTANTIATE_TEST_SUITE_P(Scene, RayCulling,
+                         ::testing::Values(CullingCase{"ClosedRoom", kRoom},
+                                           CullingCase{"GrazingHorizon", kHorizon},
+                                           CullingCase{"InsideGlass", kInsideGlass},
+                                           CullingCase{"WideAngle", kWideAngle}),
+                         [](const ::testing::TestParamInfo<CullingCase>& info) {
+                             return info.param.name;
+                         });
+
+}  // namespace
+}  // namespace render_tests

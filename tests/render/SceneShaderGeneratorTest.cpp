@@ -1,0 +1,141 @@
+// generateSceneShaderCode: the per-ray culling it builds for a scene (ray_culling.glsl).
+// Which bounds a scene's pieces get, and what numbers stand for them, is structure the host
+// decides; whether the rays then meet the same surfaces is tested by rendering
+// (RayCullingTest.cpp).
+#include "render/SceneShaderGenerator.h"
+#include "scene/SceneTestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <regex>
+
+namespace scene_tests {
+namespace {
+
+using render::generateSceneShaderCode;
+using render::SceneShaderCode;
+using render::ShaderVariant;
+
+SceneShaderCode specialized(const std::string& objects, int count)
+{
+    return generateSceneShaderCode(parse(sceneWithObjects(count, objects)),
+                                   ShaderVariant::Specialized);
+}
+
+int occurrences(const std::string& text, const std::string& pattern)
+{
+    const std::regex expression(pattern);
+    return static_cast<int>(std::distance(
+        std::sregex_iterator(text.begin(), text.end(), expression), std::sregex_iterator()));
+}
+
+// The uShapeParameters value a culling call reads, e.g. for "cullByBall(culling, 2u, ...".
+glm::vec4 culledBound(const SceneShaderCode& code, const std::string& call, unsigned bit)
+{
+    const std::regex expression(call + R"(\(culling, )" + std::to_string(bit) +
+                                R"(u, uShapeParameters\[(\d+)\])");
+    std::smatch match;
+    if (!std::regex_search(code.sceneFunctions, match, expression))
+        throw std::runtime_error(call + " with bit " + std::to_string(bit) + " not generated");
+    return code.shapeParameters.at(std::stoul(match[1]));
+}
+
+void expectNear(const glm::vec4& actual, const glm::vec4& expected)
+{
+    for (int i = 0; i < 4; ++i)
+        EXPECT_NEAR(actual[i], expected[i], 1e-5f) << "component " << i;
+}
+
+TEST(RayCulling, EveryPlaneOfARoomIsCulledOnItsOwn)
+{
+    const SceneShaderCode code =
+        specialized("0 0 polyhedron 3  0 1 0 2  1 0 0 4  0 0 -2 6\n", 1);
+    EXPECT_EQ(occurrences(code.sceneFunctions, R"(cullByHalfSpace\()"), 3);
+    // The planes as the distance uses them: unit normals.
+    expectNear(culledBound(code, "cullByHalfSpace", 1), {0, 1, 0, 2});
+    expectNear(culledBound(code, "cullByHalfSpace", 2), {1, 0, 0, 4});
+    expectNear(culledBound(code, "cullByHalfSpace", 4), {0, 0, -1, 3});
+    EXPECT_EQ(occurrences(code.sceneFunctions, R"(escapeDistance = FLOAT_MAX)"), 0)
+        << "every piece has a bound, so a ray escapes once past all of them";
+}
+
+TEST(RayCulling, FiniteObjectsAreCulledByTheirBoundingBalls)
+{
+    const SceneShaderCode code = specialized("0 0 sphere 1 2 3 0.5\n"
+                                             "0 0 box 0 0 0  1 2 2\n"
+                                             "0 0 torus 0 1 0  2 0.5\n",
+                                             3);
+    EXPECT_EQ(occurrences(code.sceneFunctions, R"(cullByBall\()"), 3);
+    expectNear(culledBound(code, "cullByBall", 1), {1, 2, 3, 0.5f});
+    expectNear(culledBound(code, "cullByBall", 2), {0, 0, 0, 3});
+    expectNear(culledBound(code, "cullByBall", 4), {0, 1, 0, 2.5f});
+}
+
+TEST(RayCulling, ConeIsCulledByTheHalfSpaceOnTheFarSideOfItsApex)
+{
+    // Opening downwards below its apex at y = 2; its distance bound grows at b / |(a, b)| of
+    // the height above the apex.
+    const SceneShaderCode down = specialized("0 0 cone 0 2 0  3 4\n", 1);
+    expectNear(culledBound(down, "cullByHalfSpace", 1), {0, 0.8f, 0, -1.6f});
+    // Opening upwards (b < 0) above it.
+    const SceneShaderCode up = specialized("0 0 cone 0 2 0  3 -4\n", 1);
+    expectNear(culledBound(up, "cullByHalfSpace", 1), {0, -0.8f, 0, 1.6f});
+}
+
+TEST(RayCulling, TransformedPolyhedronIsCulledByItsPlanesInWorldSpace)
+{
+    // The solid y <= 0, scaled by 2, turned 90 degrees about z (the solid x >= 0, or
+    // -x <= 0) and moved by 1 along x: the solid x >= 1.
+    const SceneShaderCode code =
+        specialized("0 0 translate 1 0 0 rotate 0 0 1 90 scale 2 polyhedron 1  0 1 0 0\n", 1);
+    expectNear(culledBound(code, "cullByHalfSpace", 1), {-1, 0, 0, 1});
+}
+
+TEST(RayCulling, ObjectsWithoutABoundMakeEveryRayMarchToTheFarDistance)
+{
+    // A CSG difference of two half-spaces is unbounded.
+    const SceneShaderCode code = specialized("0 0 difference {\n"
+                                             "  polyhedron 1  0 1 0 0\n"
+                                             "  polyhedron 1  1 0 0 0\n"
+                                             "}\n",
+                                             1);
+    EXPECT_EQ(occurrences(code.sceneFunctions, R"(cull(ByBall|ByHalfSpace)\()"), 0);
+    EXPECT_EQ(occurrences(code.sceneFunctions, R"(escapeDistance = FLOAT_MAX)"), 1);
+}
+
+TEST(RayCulling, PiecesBeyondThirtyTwoAreNeverCulled)
+{
+    std::string objects;
+    for (int i = 0; i < 40; ++i)
+        objects += "0 0 sphere " + std::to_string(3 * i) + " 0 0 1\n";
+    const SceneShaderCode code = specialized(objects, 40);
+    EXPECT_EQ(occurrences(code.sceneFunctions, R"(cullByBall\()"), 32);
+    EXPECT_EQ(occurrences(code.sceneFunctions, R"(escapeDistance = FLOAT_MAX)"), 1)
+        << "spheres without a bit may be met anywhere";
+}
+
+TEST(RayCulling, EditingAValueChangesOnlyUniforms)
+{
+    const SceneShaderCode before = specialized("0 0 polyhedron 1  0 1 0 2\n"
+                                               "0 0 sphere 1 2 3 0.5\n"
+                                               "0 0 cone 0 2 0  3 4\n",
+                                               3);
+    const SceneShaderCode after = specialized("0 0 polyhedron 1  0 1 0.5 7\n"
+                                              "0 0 sphere -1 0 3 2\n"
+                                              "0 0 cone 1 1 1  1 2\n",
+                                              3);
+    EXPECT_EQ(before.sceneFunctions, after.sceneFunctions);
+    EXPECT_EQ(before.defines, after.defines);
+    EXPECT_NE(before.shapeParameters, after.shapeParameters);
+}
+
+TEST(RayCulling, GeneralShaderCullsNothing)
+{
+    const SceneShaderCode code =
+        generateSceneShaderCode(parse(sceneWithObjects(1, "0 0 sphere 0 0 0 1\n")),
+                                ShaderVariant::General);
+    EXPECT_EQ(occurrences(code.sceneFunctions, R"(cull(ByBall|ByHalfSpace)\()"), 0);
+}
+
+}  // namespace
+}  // namespace scene_tests
