@@ -36,9 +36,9 @@ int pigmentCode(PigmentKind kind)
     return 0;
 }
 
-float average(const glm::vec3& v)
+double average(const glm::dvec3& v)
 {
-    return (v.x + v.y + v.z) / 3.0f;
+    return (v.x + v.y + v.z) / 3.0;
 }
 
 template <typename Vector>
@@ -77,13 +77,19 @@ void setVec3(const gl::Program& program, const char* name, const glm::vec3& valu
 
 }  // namespace
 
-std::vector<float> lightPowers(const Scene& scene)
+// In double: the power of a bright, large sphere light (radiance near the float maximum)
+// overflows float, and one infinite power would make every selection probability NaN.
+std::vector<double> lightPowers(const Scene& scene)
 {
-    std::vector<float> powers;
+    constexpr double kPiDouble = 3.14159265358979323846;
+    std::vector<double> powers;
     for (const PointLight& light : scene.pointLights)
-        powers.push_back(4.0f * kPi * average(light.intensity));
-    for (const SphereLight& light : sphereLights(scene))
-        powers.push_back(4.0f * kPi * kPi * light.radius * light.radius * average(light.radiance));
+        powers.push_back(4.0 * kPiDouble * average(glm::dvec3(light.intensity)));
+    for (const SphereLight& light : sphereLights(scene)) {
+        const double radius = light.radius;
+        powers.push_back(4.0 * kPiDouble * kPiDouble * radius * radius *
+                         average(glm::dvec3(light.radiance)));
+    }
     return powers;
 }
 
@@ -115,17 +121,19 @@ SceneUniforms packSceneUniforms(const Scene& scene, const SceneShaderCode& code)
     }
 
     const std::vector<SphereLight> spheres = sphereLights(scene);
-    const std::vector<float> powers = lightPowers(scene);
-    float totalPower = 0.0f;
-    for (float power : powers)
+    const std::vector<double> powers = lightPowers(scene);
+    double totalPower = 0.0;
+    for (double power : powers)
         totalPower += power;
     std::vector<int> lightOfObject(scene.objects.size(), -1);
-    float cumulative = 0.0f;
+    double cumulativeProbability = 0.0;
     for (std::size_t i = 0; i < powers.size(); ++i) {
-        const float probability = totalPower > 0.0f ? powers[i] / totalPower : 0.0f;
-        cumulative += probability;
+        const float probability =
+            totalPower > 0.0 ? static_cast<float>(powers[i] / totalPower) : 0.0f;
+        cumulativeProbability += totalPower > 0.0 ? powers[i] / totalPower : 0.0;
         // The last light closes the table exactly at 1 whatever the rounding.
-        const float cdf = i + 1 == powers.size() ? 1.0f : cumulative;
+        const float cdf =
+            i + 1 == powers.size() ? 1.0f : static_cast<float>(cumulativeProbability);
         if (i < scene.pointLights.size()) {
             const PointLight& light = scene.pointLights[i];
             packed.lights.emplace_back(light.position, 0.0f);

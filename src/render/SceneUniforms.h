@@ -36,7 +36,7 @@ SceneUniforms packSceneUniforms(const scene::Scene& scene, const SceneShaderCode
 
 // Emitted power of each light, the quantity lights are selected by: 4 pi I for a point
 // light, 4 pi^2 r^2 L for a sphere of radiance L (channels averaged).
-std::vector<float> lightPowers(const scene::Scene& scene);
+std::vector<double> lightPowers(const scene::Scene& scene);
 
 // Sets every scene and settings uniform of `program` (which must be in use).
 void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,

@@ -54,6 +54,35 @@ TEST(Lights, TinyDistantSphereLightMatchesEquivalentPointLight)
                 1e-3 * hard::meanRadiance(pointOutput.radiance));
 }
 
+// A light is selected in proportion to its power 4 pi^2 r^2 L, which for radiance near the
+// float maximum on a sphere of radius 0.5 is far beyond it: computed in float it overflowed,
+// every selection probability became NaN, light sampling never chose the light and every
+// path that met it was discarded (a black floor). Radiance is linear: ten times the
+// radiance is ten times the image.
+TEST(Lights, RadianceNearTheFloatMaximumOnALargeSphereIsStillSampled)
+{
+    auto floorUnderLight = [](const char* radiance) {
+        return floorUnder("0\n", std::string(radiance) + " " + radiance + " " + radiance +
+                                     " 0 0 0 0\n",
+                          "1 1 sphere 0 2 0 0.5\n", 2, 2, 2, "solid 0 0 0\n");
+    };
+    hard::RenderRequest dimmer;
+    dimmer.sceneText = floorUnderLight("1e37");
+    dimmer.samplesPerPixel = 64;
+    dimmer.settings.seed = 1;
+    hard::RenderRequest brighter = dimmer;
+    brighter.sceneText = floorUnderLight("1e38");
+    brighter.settings.seed = 2;
+
+    const hard::RenderOutput dimmerOutput = hard::render(dimmer);
+    const hard::RenderOutput brighterOutput = hard::render(brighter);
+    EXPECT_EQ(hard::nonFinitePixels(brighterOutput.radiance), 0);
+    EXPECT_EQ(brighterOutput.discarded, 0u) << "paths meeting the light were discarded";
+    const double expected = 10.0 * hard::meanRadiance(dimmerOutput.radiance);
+    EXPECT_NEAR(hard::meanRadiance(brighterOutput.radiance), expected, 0.02 * expected)
+        << "radiance 1e38 should light the floor ten times as brightly as 1e37";
+}
+
 TEST(Lights, MillionRadianceOnTinySphereStaysFinite)
 {
     hard::RenderRequest request;
