@@ -50,8 +50,18 @@ if [ ${#names[@]} -eq 0 ]; then
     names=("${known[@]}")
     explicit=0
 fi
+# Whether $1 is one of the known case names. A loop, not `printf | grep -q`: grep -q exits at
+# the first match, and printf, still writing, then dies of SIGPIPE, which pipefail reports as
+# a failure of the whole check.
+is_known_case() {
+    local case_name
+    for case_name in "${known[@]}"; do
+        [ "$case_name" = "$1" ] && return 0
+    done
+    return 1
+}
 for name in "${names[@]}"; do
-    if ! printf '%s\n' "${known[@]}" | grep -qx -- "$name"; then
+    if ! is_known_case "$name"; then
         echo "update-references: no regression case named '$name' (see --list)" >&2
         exit 2
     fi

@@ -4,7 +4,9 @@
 // render; the host seeds every pixel's state from a 64-bit hash of (seed, pixel), so no two
 // pixels share a stream and no two frames reuse numbers.
 
-uvec4 rngState;
+// main sets it from the RNG texture before any number is drawn; the initialiser only spares
+// a compiler that cannot see this (Mesa) its "used uninitialized" warnings.
+uvec4 rngState = uvec4(0u);
 
 uint rotateLeft(uint x, uint k)
 {
