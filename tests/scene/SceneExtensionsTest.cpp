@@ -188,6 +188,105 @@ TEST(CsgBlocks, ExponentialSharpnessMustBePositive)
                         13, "0", "sharpness"));
 }
 
+// --- errors inside nested CSG blocks -------------------------------------------------------
+
+// One object whose shape is `line` two blocks deep, on line 17 of the file.
+std::string twoBlocksDeep(const std::string& line)
+{
+    return sceneWithObjects(1, "0 0 union {\n"              // 13
+                               "  sphere 0 0 0 1\n"         // 14
+                               "  difference {\n"           // 15
+                               "    box 0 0 0 1 1 1\n"      // 16
+                               "    " + line + "\n"         // 17
+                               "  }\n"                      // 18
+                               "}\n");                      // 19
+}
+
+// One object whose shape is `line` three blocks deep, on line 19 of the file, after one
+// other shape in the innermost block (opened on line 17).
+std::string threeBlocksDeep(const std::string& line)
+{
+    return sceneWithObjects(1, "0 0 smooth_union exp 4 {\n"  // 13
+                               "  sphere 0 0 0 1\n"          // 14
+                               "  union {\n"                 // 15
+                               "    box 0 0 0 1 1 1\n"       // 16
+                               "    intersection {\n"        // 17
+                               "      sphere 0 0 0 1.2\n"    // 18
+                               "      " + line + "\n"        // 19
+                               "    }\n"                     // 20
+                               "  }\n"                       // 21
+                               "}\n");                       // 22
+}
+
+TEST(NestedCsgErrors, LayoutsAreValidAroundASoundShape)
+{
+    EXPECT_NO_THROW(parse(twoBlocksDeep("sphere 0 0 0 0.5")));
+    EXPECT_NO_THROW(parse(threeBlocksDeep("cylinder 0 0 0 0.5 1")));
+}
+
+TEST(NestedCsgErrors, WordForANumberTwoBlocksDeepNamesItsLineAndToken)
+{
+    EXPECT_TRUE(failsAt(twoBlocksDeep("sphere 0 0 zero 1"), 17, "zero",
+                        "a number (sphere centre, z)"));
+}
+
+TEST(NestedCsgErrors, WordForANumberThreeBlocksDeepNamesItsLineAndToken)
+{
+    EXPECT_TRUE(failsAt(threeBlocksDeep("sphere 0 0 zero 1"), 19, "zero",
+                        "a number (sphere centre, z)"));
+}
+
+TEST(NestedCsgErrors, NegativeRadiusThreeBlocksDeepNamesItsLineAndToken)
+{
+    EXPECT_TRUE(failsAt(threeBlocksDeep("cylinder 0 0 0 -0.5 1"), 19, "-0.5",
+                        "a positive number (cylinder radius)"));
+}
+
+TEST(NestedCsgErrors, StrayTokenThreeBlocksDeepNamesEveryEnclosingBlock)
+{
+    EXPECT_TRUE(failsAt(threeBlocksDeep("7"), 19, "7",
+                        "an object type for object 1 of 1, inside 'smooth_union', inside "
+                        "'union', inside 'intersection'"));
+}
+
+TEST(NestedCsgErrors, SmoothParameterTwoBlocksDeepNamesItsLineAndToken)
+{
+    EXPECT_TRUE(failsAt(twoBlocksDeep("smooth_difference poly -0.1 { sphere 0 0 0 1 "
+                                      "box 0 0 0 1 1 1 }"),
+                        17, "-0.1", "a number of at least 0 (smooth-min blend radius)"));
+}
+
+TEST(NestedCsgErrors, ZeroRotationAxisThreeBlocksDeepNamesTheAxisFirstToken)
+{
+    // The angle, read before the axis can be judged, stands on the next line.
+    EXPECT_TRUE(failsAt(threeBlocksDeep("rotate 0 0 0\n      45 box 0 0 0 1 1 1"), 19, "0",
+                        "a rotation axis that is not zero"));
+}
+
+TEST(NestedCsgErrors, MissingUserSdfThreeBlocksDeepNamesItsShaderFile)
+{
+    EXPECT_TRUE(failsAt(threeBlocksDeep("no_such_sdf 0 0 0"), 19, "no_such_sdf",
+                        "a user SDF with a shader file no_such_sdf.glsl"));
+}
+
+TEST(NestedCsgErrors, LoneShapeThreeBlocksDeepNamesTheInnermostBlockAndItsLine)
+{
+    EXPECT_TRUE(failsAt(threeBlocksDeep(""), 20, "}",
+                        "at least two shapes inside 'intersection' (opened on line 17)"));
+}
+
+TEST(NestedCsgErrors, FileEndingThreeBlocksDeepNamesTheInnermostOpenBlock)
+{
+    const std::string truncated = sceneWithObjects(1, "0 0 smooth_union exp 4 {\n"  // 13
+                                                      "  sphere 0 0 0 1\n"          // 14
+                                                      "  union {\n"                 // 15
+                                                      "    box 0 0 0 1 1 1\n"       // 16
+                                                      "    intersection {\n"        // 17
+                                                      "      sphere 0 0 0 1.2\n"    // 18
+                                                      "      box 0 0 0 1 1 1\n");   // 19
+    EXPECT_TRUE(failsAt(truncated, 19, "", "'}' closing the 'intersection' opened on line 17"));
+}
+
 // --- transforms ---------------------------------------------------------------------------
 
 TEST(Transforms, TranslateMovesTheShapeAndKeepsItsGeometry)
