@@ -74,6 +74,15 @@ double maxRadiance(const io::Image& image)
     return largest;
 }
 
+testing_support::RenderedImage renderedImage(const RenderOutput& output)
+{
+    testing_support::RenderedImage image;
+    image.radiance = output.radiance;
+    image.statistics = output.statistics;
+    image.discardedSamples = output.discarded;
+    return image;
+}
+
 double normalUpperQuantile(double p)
 {
     // Bisection on the complementary error function: exact enough for test thresholds.

@@ -3,6 +3,7 @@
 // through OSMesa with the real shader, read back as linear radiance with per-pixel statistics.
 #include "io/Image.h"
 #include "render/RenderSettings.h"
+#include "support/RenderRun.h"
 
 #include <cstdint>
 #include <string>
@@ -43,6 +44,10 @@ double maxRadiance(const io::Image& image);
 // an explanation when they do not agree, empty when they do.
 std::string disagreementWithinNoise(const RenderOutput& a, const RenderOutput& b,
                                     int blockSize = 8);
+
+// The render as the suite's noise-aware comparator reads it (support/ImageComparison.h:
+// compareImages, the test the regression and render tests use).
+testing_support::RenderedImage renderedImage(const RenderOutput& output);
 
 // Upper quantile of the standard normal distribution: P(Z > z) = p.
 double normalUpperQuantile(double p);

@@ -1,0 +1,80 @@
+#pragma once
+// The scene format's camera on the CPU, for closed-form expectations in the torture suite:
+// pixel (i, j) covers uv = ((2 (i, j) - (w, h)) / h) tan(fovy / 2) with row 0 at the bottom
+// (GL), and the renderer jitters each sample uniformly inside it. Images are read back top
+// row first, so picture row y is GL row h - 1 - y. (tests/render has its own copy; the hard
+// cases build without the rest of the suite.)
+#include "scene/Scene.h"
+
+#include <glm/glm.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace hard {
+
+class PinholeCamera {
+public:
+    PinholeCamera(const scene::Camera& camera, int width, int height)
+        : eye_(camera.eye),
+          frame_(scene::cameraFrame(camera)),
+          tanHalfFovy_(std::tan(glm::radians(static_cast<double>(camera.verticalFieldOfViewDegrees)) /
+                               2.0)),
+          width_(width),
+          height_(height)
+    {
+    }
+
+    glm::dvec3 eye() const { return eye_; }
+
+    // The unit direction through film point (fx, fy) of picture coordinates: x to the
+    // right, y down from the top edge, in pixels.
+    glm::dvec3 direction(double fx, double fy) const
+    {
+        const double glY = height_ - fy;
+        const double u = (2.0 * fx - width_) / height_ * tanHalfFovy_;
+        const double v = (2.0 * glY - height_) / height_ * tanHalfFovy_;
+        return glm::normalize(u * glm::dvec3(frame_.right) + v * glm::dvec3(frame_.trueUp) +
+                              glm::dvec3(frame_.forward));
+    }
+
+    // The mean of f(direction) over picture pixel (x, y), by the midpoint rule on a
+    // `subdivisions`^2 grid: what the renderer's uniform jitter converges to.
+    template <typename Function>
+    double pixelAverage(int x, int y, int subdivisions, Function f) const
+    {
+        double sum = 0.0;
+        for (int a = 0; a < subdivisions; ++a)
+            for (int b = 0; b < subdivisions; ++b)
+                sum += f(direction(x + (a + 0.5) / subdivisions, y + (b + 0.5) / subdivisions));
+        return sum / (subdivisions * subdivisions);
+    }
+
+    // True when the four corners and the centre of pixel (x, y) all satisfy `test`.
+    template <typename Test>
+    bool wholePixel(int x, int y, Test test) const
+    {
+        return test(direction(x, y)) && test(direction(x + 1, y)) &&
+               test(direction(x, y + 1)) && test(direction(x + 1, y + 1)) &&
+               test(direction(x + 0.5, y + 0.5));
+    }
+
+private:
+    glm::dvec3 eye_;
+    scene::CameraFrame frame_;
+    double tanHalfFovy_;
+    int width_;
+    int height_;
+};
+
+// Distance from `point` to the line through `origin` along unit `direction`, measured on
+// the segment's forward side (points behind the origin are measured to the origin).
+inline double distanceToRay(const glm::dvec3& point, const glm::dvec3& origin,
+                            const glm::dvec3& direction)
+{
+    const glm::dvec3 toPoint = point - origin;
+    const double along = std::max(0.0, glm::dot(toPoint, direction));
+    return glm::length(toPoint - along * direction);
+}
+
+}  // namespace hard
