@@ -443,11 +443,41 @@ def settings_reading(rows, digests, timing_noise):
                 "a hit, as soon as the distance falls below the tolerance, so a ray that passes "
                 "within tolerance × footprint of an object hits it and every silhouette is "
                 "dilated by that fraction of a pixel (bright emitters' outlines change the "
-                "image sum most). The dilation is a fixed fraction of a pixel, so its share of "
+                "image sum most); shadow rays likewise see occluders dilated by the tolerance at "
+                "the point they leave, and paths leave each surface that far off it. Camera and "
+                "specular rays that truly meet a surface are moved along the ray onto it "
+                "(`intersectAlongRay`), so the tolerance does not misplace what they see, only "
+                "the near misses. The dilation is a fixed fraction of a pixel, so its share of "
                 "the picture, and this bias, shrink as the resolution grows. Shorter steps "
                 "(step-scale below 1) follow a grazing ray more closely and so meet the "
                 "tolerance more often: the small differences step-scale makes come from the "
                 "same dilation.")
+
+    # A firefly in the default-settings render inflates the noise every value of its scene
+    # is judged against; say so where it happened.
+    inflated = []
+    for scene in sorted({r["scene"] for r in rows}):
+        mine = [r for r in rows if r["scene"] == scene]
+        default = next((r for r in mine if r["is_default"] == "1"), None)
+        others = [number(r, "rel_mse") for r in mine
+                  if r["is_default"] != "1" and judge(r) == "noise"]
+        if default is None or len(others) < 3:
+            continue
+        typical = statistics.median(others)
+        if number(default, "rel_mse") > 3.0 * typical:
+            inflated.append((scene, number(default, "rel_mse") / typical))
+    if inflated:
+        blocks.append(
+            "**Fireflies in the default render.** "
+            + "; ".join(f"In {scene} the default-settings render's error is "
+                        f"{fmt(factor, 2)}× the median of the unbiased values'" for scene, factor
+                        in inflated)
+            + ": it met a rare, very bright path (one caustic sample outweighs the rest of the "
+            "image), so its noise, which every value of that scene is judged against, is "
+            "inflated there, and a bias of that scene's values smaller than it cannot be seen. "
+            "The other values' renders, with other random streams, did not meet one; the spike "
+            "at the default value in that scene's curves is this single render, not a property "
+            "of the default.")
 
     # Recommendations, from the digests.
     free, slower_better, biased_speedups, noisy_speedups = [], [], [], []
@@ -736,7 +766,9 @@ def write_report(args):
                                "left out of the fit")
             ratio = number(s["last"], "seconds") / int(s["last"]["spp"])
             first_ratio = number(s["first"], "seconds") / int(s["first"]["spp"])
-            if first_ratio > 1.5 * ratio:
+            steeper_in_time = (s["slope_time"] is not None and s["slope_spp"] is not None
+                               and s["slope_time"] < s["slope_spp"] - 0.05)
+            if first_ratio > 1.5 * ratio and steeper_in_time:
                 reasons.append(
                     f"the first samples cost more per sample ({fmt(1e3 * first_ratio, 3)} ms "
                     f"against {fmt(1e3 * ratio, 3)} ms later): per-frame overhead or load on "
