@@ -351,7 +351,7 @@ std::vector<SettingSweep> accuracySettingSweeps()
                 {v, formatNumber(v), [set, v](RenderSettings& s) { set(s, v); }});
         sweeps.push_back(sweep);
     };
-    numeric("hit-tolerance", {0.125, 0.25, 0.5, 1, 2},
+    numeric("hit-tolerance", {0.0625, 0.125, 0.25, 0.5, 1},
             [](RenderSettings& s, double v) { s.hitTolerance = static_cast<float>(v); });
     numeric("max-steps", {32, 64, 128, 256, 512},
             [](RenderSettings& s, double v) { s.maxMarchSteps = static_cast<int>(v); });

@@ -93,6 +93,7 @@ struct PathState {
     vec3 previousPosition;
     int scattering;
     int nullCrossings;
+    float marchStart;  // how far along the ray its march may begin (see cameraClearDistance)
 };
 
 // The most segments (traced rays) one path can take.
@@ -101,17 +102,56 @@ int maxSegmentsPerPath()
     return uMaxBounces + 1 + kMaxNullCrossings;
 }
 
-PathState startPath(vec2 filmPoint)
+// Where the camera is: inside which solid (-1 outside every one). A ray inside a solid can
+// only leave that solid: where another surface touches it (glass resting on a floor), a hit
+// within the tolerance of both is the solid's.
+int cameraContainingObject()
+{
+    int containing;
+    return sceneDistanceAndObject(uCameraEye, containing) < 0.0 ? containing : -1;
+}
+
+// How far every camera ray through `pixel` travels before any surface comes within its hit
+// tolerance: the pixel's rays fill a cone around the one through its centre, and that cone
+// is marched once (cone marching, as in Amanatides, "Ray tracing with cones", 1984) so that
+// each of the pixel's paths starts its camera ray there instead of at the eye. A step from
+// t may advance by as much as leaves every point of the cone up to t + step farther from the
+// nearest surface than its tolerance: for a distance d at the cone's axis, a cone whose
+// rays stray at most `spread` per unit from the axis and tolerances growing by `growth`,
+// that is (d - tolerance0 - (spread + growth) t) / (1 + spread + growth). The same cone
+// bounds the culling (ray_culling.glsl takes the cone's spread as growth of tolerance).
+float cameraClearDistance(ivec2 pixel)
+{
+    vec3 axis = cameraRayDirection(vec2(pixel) + 0.5);
+    // Every ray through the pixel lies within half the pixel's diagonal of the axis; a pixel
+    // subtends the largest angle at the centre of the image.
+    float growth = (0.7072 + uHitTolerance) * cameraPixelSpread();
+    float tolerance0 = uMinimumHitDistance;
+    RayCulling culling = sceneRayCulling(uCameraEye, axis, tolerance0, growth);
+    float limit = min(uFarDistance, culling.escapeDistance);
+    const int kConeSteps = 64;
+    float t = 0.0;
+    for (int step = 0; step < kConeSteps && t < limit; ++step) {
+        float clearance = sceneDistanceCulled(uCameraEye + t * axis, culling.mask) -
+                          tolerance0 - growth * t;
+        float advance = 0.9 * uStepScale * clearance / (1.0 + growth);
+        // Near a surface the steps shrink geometrically; the camera rays' own marches,
+        // each from here, finish the approach.
+        if (advance < tolerance0 + growth * t)
+            break;
+        t += advance;
+    }
+    return min(t, limit);
+}
+
+PathState startPath(vec2 filmPoint, int cameraContaining, float cameraClear)
 {
     PathState path;
     path.origin = uCameraEye;
     path.direction = cameraRayDirection(filmPoint);
     path.cone = RayCone(0.0, cameraPixelSpread());
-    // A ray inside a solid can only leave that solid: where another surface touches it
-    // (glass resting on a floor), a hit within the tolerance of both is the solid's.
-    path.insideSign = sceneDistanceAndObject(path.origin, path.containing) < 0.0 ? -1.0 : 1.0;
-    if (path.insideSign > 0.0)
-        path.containing = -1;
+    path.containing = cameraContaining;
+    path.insideSign = cameraContaining >= 0 ? -1.0 : 1.0;
     path.throughput = vec3(1.0);
     path.radianceScale = 1.0;
     path.radiance = vec3(0.0);
@@ -120,6 +160,7 @@ PathState startPath(vec2 filmPoint)
     path.previousPosition = path.origin;
     path.scattering = 0;
     path.nullCrossings = 0;
+    path.marchStart = cameraContaining >= 0 ? 0.0 : cameraClear;
     return path;
 }
 
@@ -127,7 +168,9 @@ PathState startPath(vec2 filmPoint)
 // ended, its radiance then final.
 bool continuePath(inout PathState path)
 {
-    MarchHit hit = sphereTrace(path.origin, path.direction, path.insideSign, path.cone);
+    MarchHit hit = sphereTrace(path.origin, path.direction, path.insideSign, path.cone,
+                               path.marchStart);
+    path.marchStart = 0.0;
     if (!hit.found) {
         path.radiance += path.throughput * environmentRadiance(path.direction);
         return false;
@@ -140,30 +183,24 @@ bool continuePath(inout PathState path)
     vec3 marched = path.origin + hit.t * direction;
     float footprint = coneFootprint(path.cone, hit.t);
     float tolerance = hitTolerance(path.cone, hit.t);
-    vec3 normal = sceneNormal(marched, tolerance, insideSign);
+    // The march stopped within `tolerance` of the surface. What the pixel sees, though, is
+    // where its ray meets the surface: rays of the pixel's own cone (camera rays and specular
+    // chains) are first moved along the ray onto it (see intersectAlongRay; without it a lit
+    // plane comes out about 1 % too bright, a floor seen at grazing angles shows its pattern
+    // displaced towards the camera, and a convex mirror, whose reflected directions follow the
+    // point, reflects the wrong part of the room near its rim). Elsewhere, and where that
+    // does not converge, the point is projected along the normal, which lands on the surface
+    // within the tolerance, safely. The normal is taken at the final point: decisions such as
+    // which side the ray came from are ill-conditioned at grazing incidence and must match it.
+    vec3 p = marched;
+    bool onSurface = path.cone.spread > 0.0 &&
+                     intersectAlongRay(p, direction, hit.sceneDistance, insideSign, hit.approach,
+                                       tolerance);
+    vec3 normal = sceneNormal(p, tolerance, insideSign);
     if (normal == vec3(0.0))
         normal = -direction;
-    // The march stopped within `tolerance` of the surface. Projected along the normal, the
-    // point lands on the surface within that distance, safely. What the pixel sees, though,
-    // is where its ray meets the surface: rays of the pixel's own cone (camera rays and
-    // specular chains) take one Newton step along the ray (exact for planes; without it a
-    // lit plane comes out about 1 % too bright), accepted only where it clearly brings the
-    // point closer to the surface (not at grazing incidence on a curve, which the ray may
-    // not meet at all, nor into another solid near an edge). The normal is then taken again
-    // at the new point: decisions such as which side the ray came from are ill-conditioned
-    // at grazing incidence and must match the point.
-    vec3 p = marched - normal * hit.sceneDistance;
-    float cosIncidence = abs(dot(direction, normal));
-    if (path.cone.spread > 0.0 && abs(hit.sceneDistance) < 4.0 * tolerance * cosIncidence) {
-        vec3 onRay = marched + direction * (insideSign * hit.sceneDistance / cosIncidence);
-        if (abs(sceneDistance(onRay)) <= 0.5 * abs(hit.sceneDistance)) {
-            vec3 normalOnRay = sceneNormal(onRay, tolerance, insideSign);
-            if (normalOnRay != vec3(0.0)) {
-                p = onRay;
-                normal = normalOnRay;
-            }
-        }
-    }
+    if (!onSurface)
+        p -= normal * hit.sceneDistance;
     vec3 wo = -direction;
     Surface s = surfaceAt(hit.object, p, normal, wo, insideSign, footprint, tolerance);
 

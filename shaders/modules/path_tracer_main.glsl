@@ -35,7 +35,9 @@ void main()
     // llvmpipe included, so a loop of whole paths costs the longest path of the group for
     // every path.)
     // A uniformly random point inside the pixel for each path: box-filtered anti-aliasing.
-    PathState path = startPath(vec2(pixel) + random2());
+    int cameraContaining = cameraContainingObject();
+    float cameraClear = cameraClearDistance(pixel);
+    PathState path = startPath(vec2(pixel) + random2(), cameraContaining, cameraClear);
     int completed = 0;
     int segments = uSamplesPerFrame * maxSegmentsPerPath();
     for (int segment = 0; segment < segments; ++segment) {
@@ -53,7 +55,7 @@ void main()
         }
         if (++completed == uSamplesPerFrame)
             break;
-        path = startPath(vec2(pixel) + random2());
+        path = startPath(vec2(pixel) + random2(), cameraContaining, cameraClear);
     }
     outEstimate = estimate;
     outMoments = moments;

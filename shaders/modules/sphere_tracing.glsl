@@ -35,6 +35,10 @@ struct MarchHit {
     float t;
     float sceneDistance;  // sceneDistance() at the hit point, sign included
     int object;
+    // How fast the distance to the surface fell along the ray over the march's last step
+    // (the secant slope of the signed radius): 1 heading straight at a plane, near 0
+    // grazing it, 0 where unknown.
+    float approach;
 };
 
 // The pieces of the scene the ray may come near, and how far it may meet any (see
@@ -46,24 +50,30 @@ RayCulling rayCulling(vec3 origin, vec3 direction, RayCone cone)
 }
 
 // `insideSign` is -1 when the ray starts inside the solid (inside glass): the distance is
-// negated so the march heads for the boundary from within.
-MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone)
+// negated so the march heads for the boundary from within. The march begins at
+// `startDistance`, which the caller knows to be clear of every surface (0: the origin).
+MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone,
+                     float startDistance)
 {
     RayCulling culling = rayCulling(origin, direction, cone);
     float farDistance = min(uFarDistance, culling.escapeDistance);
     float omega = uOverRelaxation;
-    float t = 0.0;
+    float t = startDistance;
     float stepLength = 0.0;
     float previousRadius = 0.0;
+    // The last point the march accepted (not one a failed relaxed step reached), for the
+    // secant slope at a hit.
+    float acceptedT = startDistance;
+    float acceptedRadius = 0.0;
     float bestError = FLOAT_MAX;
-    MarchHit best = MarchHit(false, 0.0, 0.0, -1);
+    MarchHit best = MarchHit(false, 0.0, 0.0, -1, 0.0);
 
     for (int step = 0; step < uMaxMarchSteps; ++step) {
         if (t >= farDistance) {
             // Escaped, unless a relaxed step jumped past the part of the ray its safe sphere
             // covered: a surface may lie there. Then it is undone as a failed relaxation.
             if (t - stepLength + previousRadius >= farDistance)
-                return MarchHit(false, t, 0.0, -1);
+                return MarchHit(false, t, 0.0, -1, 0.0);
             stepLength -= omega * stepLength;
             omega = 1.0;
             t += stepLength;
@@ -76,20 +86,33 @@ MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone
 
         // Over-relaxed spheres must overlap; when they do not, the relaxed step may have
         // jumped over a surface: step back inside the last safe sphere and stop relaxing.
-        bool relaxationFailed = omega > 1.0 && radius + previousRadius < stepLength;
+        // A relaxed step that lands inside a solid has crossed its surface even where the
+        // spheres touch (a plane met head on): it is undone too, so that hits are always
+        // approached from the ray's side.
+        bool relaxationFailed =
+            omega > 1.0 && (radius + previousRadius < stepLength || signedRadius < 0.0);
         if (relaxationFailed) {
             stepLength -= omega * stepLength;
             omega = 1.0;
         } else {
             stepLength = signedRadius * omega * uStepScale;
             float tolerance = hitTolerance(cone, t);
-            if (radius < tolerance)
-                return MarchHit(true, t, distance, object);
+            if (radius < tolerance) {
+                // The secant needs a previous point on the ray's side of the surface: inside
+                // a solid the distance is to whatever face is nearest in there (the hidden
+                // face where two boxes touch), not to this one.
+                float approach = acceptedRadius > 0.0
+                                     ? (acceptedRadius - signedRadius) / (t - acceptedT)
+                                     : 0.0;
+                return MarchHit(true, t, distance, object, approach);
+            }
             float error = radius / tolerance;
             if (error < bestError) {
                 bestError = error;
-                best = MarchHit(true, t, distance, object);
+                best = MarchHit(true, t, distance, object, 0.0);
             }
+            acceptedT = t;
+            acceptedRadius = signedRadius;
         }
         previousRadius = radius;
         t += stepLength;
@@ -133,4 +156,35 @@ vec3 sceneNormal(vec3 p, float step, float side)
         gradient = sceneGradient(p + (side * 1.75 * step / magnitude) * gradient, step);
     magnitude = length(gradient);
     return magnitude > 0.0 ? gradient / magnitude : vec3(0.0);
+}
+
+// Moves `point`, where a march along unit `direction` stopped at scene distance `distance`
+// (sign included; `insideSign` as for the march), along the ray onto the surface, by
+// Newton's method with the slope along the ray fixed at the march's last secant slope
+// `approach` (the chord method): exact in one step for planes, a few for curves. True when
+// it converged to within a small fraction of `tolerance`; false, and `point` unchanged,
+// where it does not converge (a ray passing a curved silhouette within the tolerance without
+// meeting it, or running into another surface near an edge) or where the ray is so close
+// to tangent that the point would move more than 16 tolerances.
+bool intersectAlongRay(inout vec3 point, vec3 direction, float distance, float insideSign,
+                       float approach, float tolerance)
+{
+    const float kMinimumApproach = 1.0 / 16.0;
+    const float kConverged = 1.0 / 32.0;
+    if (!(approach >= kMinimumApproach))
+        return false;
+    vec3 q = point;
+    float d = distance;
+    for (int i = 0; i < 3 && abs(d) > kConverged * tolerance; ++i) {
+        vec3 next = q + direction * (insideSign * d / approach);
+        float nextDistance = sceneDistance(next);
+        if (!(abs(nextDistance) < 0.5 * abs(d)))
+            return false;
+        q = next;
+        d = nextDistance;
+    }
+    if (!(abs(d) <= kConverged * tolerance))
+        return false;
+    point = q;
+    return true;
 }

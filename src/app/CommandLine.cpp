@@ -193,7 +193,7 @@ output:
   --quiet               no progress line
 
 accuracy (see docs/ACCURACY.md for what each costs):
-  --hit-tolerance F     accept a hit within F pixel footprints (default 0.5)
+  --hit-tolerance F     accept a hit within F pixel footprints (default 0.25)
   --max-steps N         sphere-tracing step limit per ray (default 512)
   --over-relaxation W   over-relaxation factor, 1 to < 2 (default 1.2; 1 disables it)
   --step-scale F        multiply every sphere-tracing step by F in (0, 1] (default 1):
