@@ -6,10 +6,12 @@
 //   bench_shader_variants [--size W H] [--seconds S] [--samples-per-frame K] [--repeats R]
 //                         [--breakdown] [--markdown] SCENE...
 //
-// Each measurement renders for at least S seconds (default 3) with K paths per pixel per
-// frame (default 4, what the program picks for a batch render of these sizes), after a first
-// frame that is timed apart. Mesa's shader cache is switched off so that every compile is
-// real.
+// Each measurement renders for at least S seconds (default 3) after a first frame that is
+// timed apart, with K paths per pixel per frame, or by default as many as the program itself
+// would choose for a batch render (about half a second of frame, at most 16; see
+// app/RenderCommand.cpp). The specialised shader is also measured with per-ray culling off
+// (--no-culling), to show what culling buys. Mesa's shader cache is switched off so that
+// every compile is real.
 #include "platform/OsMesaContext.h"
 #include "render/ProgressiveRenderer.h"
 #include "scene/SceneParser.h"
@@ -41,10 +43,11 @@ double median(std::vector<double> values)
 // One renderer's first frame (one sample per pixel, with the driver's code generation),
 // then frames of `samplesPerFrame` paths per pixel until `seconds` have passed.
 Measurement measure(const scene::Scene& scene, render::ShaderVariant variant, int width,
-                    int height, int samplesPerFrame, double seconds)
+                    int height, int samplesPerFrame, double seconds, bool rayCulling = true)
 {
     render::RenderSettings settings;
     settings.variant = variant;
+    settings.rayCulling = rayCulling;
     settings.secondsPerBand = 0.0;
     render::ProgressiveRenderer renderer(scene, width, height, settings);
     Measurement result;
@@ -53,11 +56,17 @@ Measurement measure(const scene::Scene& scene, render::ShaderVariant variant, in
     const auto start = std::chrono::steady_clock::now();
     double elapsed = 0.0;
     int samples = 0;
+    // The program's own choice when none is given: frames of about half a second.
+    const bool chooseSamples = samplesPerFrame <= 0;
+    int samplesThisFrame = chooseSamples ? 1 : samplesPerFrame;
     do {
-        renderer.renderFrame({}, samplesPerFrame);
-        samples += samplesPerFrame;
+        renderer.renderFrame({}, samplesThisFrame);
+        samples += samplesThisFrame;
         elapsed =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (chooseSamples && renderer.lastSecondsPerSample() > 0.0)
+            samplesThisFrame =
+                std::clamp(static_cast<int>(0.5 / renderer.lastSecondsPerSample()), 1, 16);
     } while (elapsed < seconds);
     result.megapathsPerSecond = static_cast<double>(width) * height * samples / elapsed / 1e6;
     // The first frame is one sample plus the code generation at the first draw.
@@ -80,7 +89,7 @@ int main(int argc, char* argv[])
     int width = 400;
     int height = 300;
     double seconds = 3.0;
-    int samplesPerFrame = 4;
+    int samplesPerFrame = 0;  // as the program chooses
     int repeats = 3;
     bool markdown = false;
     bool breakdown = false;
@@ -114,21 +123,25 @@ int main(int argc, char* argv[])
     // Every compile must be a real one: Mesa would otherwise reuse code from earlier runs.
     setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
     platform::OsMesaContext context;
-    std::printf("%s\n%dx%d, at least %.1f s per run at %d paths per pixel per frame, median of "
+    const std::string perFrame = samplesPerFrame > 0 ? std::to_string(samplesPerFrame)
+                                                     : std::string("the program's choice of");
+    std::printf("%s\n%dx%d, at least %.1f s per run at %s paths per pixel per frame, median of "
                 "%d runs\n\n",
-                context.description().c_str(), width, height, seconds, samplesPerFrame, repeats);
+                context.description().c_str(), width, height, seconds, perFrame.c_str(),
+                repeats);
     const char* header =
-        markdown ? "| scene | general Mpaths/s | specialised Mpaths/s | speed-up | compile+link "
+        markdown ? "| scene | general Mpaths/s | specialised Mpaths/s | speed-up | specialised "
+                   "without culling | culling's speed-up | compile+link "
                    "general / specialised (s) | first-draw code generation general / "
-                   "specialised (s) | "
-                   "original Mpaths/s | ours / original |\n|---|---|---|---|---|---|---|---|\n"
-                 : "scene                 general  special  speed-up  compile g/s (s)  "
-                   "first draw g/s (s)   original  ours/orig\n";
+                   "specialised (s) | original Mpaths/s | ours / original |\n"
+                   "|---|---|---|---|---|---|---|---|---|---|\n"
+                 : "scene                 general  special  speed-up  unculled  culling  "
+                   "compile g/s (s)  first draw g/s (s)   original  ours/orig\n";
     std::fputs(header, stdout);
     for (const std::string& path : scenes) {
         const scene::Scene scene = scene::parseSceneFile(path);
-        std::vector<double> generalRate, specialRate, generalCompile, specialCompile,
-            generalFirst, specialFirst, featuresRate, shapesRate;
+        std::vector<double> generalRate, specialRate, unculledRate, generalCompile,
+            specialCompile, generalFirst, specialFirst, featuresRate, shapesRate;
         for (int r = 0; r < repeats; ++r) {
             if (breakdown) {
                 featuresRate.push_back(measure(scene, render::ShaderVariant::FeaturesOnly,
@@ -146,7 +159,11 @@ int main(int argc, char* argv[])
             const Measurement special =
                 measure(scene, render::ShaderVariant::Specialized, width, height, samplesPerFrame,
                         seconds);
+            const Measurement unculled =
+                measure(scene, render::ShaderVariant::Specialized, width, height, samplesPerFrame,
+                        seconds, false);
             generalRate.push_back(general.megapathsPerSecond);
+            unculledRate.push_back(unculled.megapathsPerSecond);
             specialRate.push_back(special.megapathsPerSecond);
             generalCompile.push_back(general.compileSeconds);
             specialCompile.push_back(special.compileSeconds);
@@ -156,6 +173,7 @@ int main(int argc, char* argv[])
         const std::string name = std::filesystem::path(path).stem().string();
         const double g = median(generalRate);
         const double s = median(specialRate);
+        const double u = median(unculledRate);
         const auto original = kOriginalMegapathsPerSecond.find(name);
         char originalText[32] = "-";
         char ratioText[32] = "-";
@@ -164,14 +182,17 @@ int main(int argc, char* argv[])
             std::snprintf(ratioText, sizeof ratioText, "%.2fx", s / original->second);
         }
         if (markdown)
-            std::printf("| %s | %.3f | %.3f | %.2fx | %.2f / %.2f | %.2f / %.2f | %s | %s |\n",
-                        name.c_str(), g, s, s / g, median(generalCompile),
+            std::printf("| %s | %.3f | %.3f | %.2fx | %.3f | %.2fx | %.2f / %.2f | %.2f / %.2f | "
+                        "%s | %s |\n",
+                        name.c_str(), g, s, s / g, u, s / u, median(generalCompile),
                         median(specialCompile), median(generalFirst), median(specialFirst),
                         originalText, ratioText);
         else
-            std::printf("%-20s  %7.3f  %7.3f  %7.2fx  %6.2f / %-6.2f  %7.2f / %-7.2f  %8s  %9s\n",
-                        name.c_str(), g, s, s / g, median(generalCompile), median(specialCompile),
-                        median(generalFirst), median(specialFirst), originalText, ratioText);
+            std::printf("%-20s  %7.3f  %7.3f  %7.2fx  %8.3f  %6.2fx  %6.2f / %-6.2f  %7.2f / %-7.2f  "
+                        "%8s  %9s\n",
+                        name.c_str(), g, s, s / g, u, s / u, median(generalCompile),
+                        median(specialCompile), median(generalFirst), median(specialFirst),
+                        originalText, ratioText);
         if (breakdown)
             std::printf("%-20s  features only %.3f, shapes only %.3f Mpaths/s\n", "",
                         median(featuresRate), median(shapesRate));
