@@ -1,6 +1,7 @@
 // The raytracer program run as a user runs it: errors give one line on standard error and a
 // non-zero status and write nothing; renders write the files they promise.
 #include "io/ImageFile.h"
+#include "cli/ProgramInFolder.h"
 #include "support/ChildProcess.h"
 #include "support/TestPaths.h"
 
@@ -18,51 +19,10 @@ namespace {
 using namespace testing_support;
 namespace fs = std::filesystem;
 
-const std::string kRaytracer = RAYTRACER_EXECUTABLE;
-
-// A fresh, empty working folder per test, removed afterwards.
-class CommandLine : public ::testing::Test {
+class CommandLine : public ProgramInFolder {
 protected:
-    void SetUp() override
-    {
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        // Parameterised names hold '/': one folder, not a tree.
-        std::string name = std::string(test->test_suite_name()) + "-" + test->name();
-        std::replace(name.begin(), name.end(), '/', '-');
-        folder_ = fs::temp_directory_path() /
-                  ("raytracer-cli-" + name + "-" + std::to_string(std::random_device{}()));
-        fs::create_directories(folder_);
-    }
-    void TearDown() override { fs::remove_all(folder_); }
-
-    ProcessResult run(std::vector<std::string> arguments, ProcessOptions options = {}) const
-    {
-        arguments.insert(arguments.begin(), kRaytracer);
-        options.workingDirectory = folder_;
-        // Headless whatever the environment: these tests are about the command line.
-        options.environment["DISPLAY"] = std::nullopt;
-        options.environment["WAYLAND_DISPLAY"] = std::nullopt;
-        return runProcess(arguments, options);
-    }
-
-    fs::path write(const std::string& name, const std::string& text) const
-    {
-        std::ofstream(folder_ / name) << text;
-        return folder_ / name;
-    }
-
-    std::vector<std::string> filesInFolder() const
-    {
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(folder_))
-            names.push_back(entry.path().filename().string());
-        std::sort(names.begin(), names.end());
-        return names;
-    }
-
     std::string scene1() const { return (sourceDirectory() / "scenes" / "scene1.in").string(); }
 
-    fs::path folder_;
 };
 
 std::string describe(const ProcessResult& result)

@@ -2,6 +2,7 @@
 // located in the file (module or user SDF) and line it is about, with that line quoted.
 // Mesa reports some errors (a call to an undefined function) with source-string number 0
 // wherever they are; the location must come out right all the same.
+#include "cli/ProgramInFolder.h"
 #include "support/ChildProcess.h"
 #include "support/TestPaths.h"
 
@@ -16,8 +17,6 @@ namespace {
 
 using namespace testing_support;
 namespace fs = std::filesystem;
-
-const std::string kRaytracer = RAYTRACER_EXECUTABLE;
 
 // One sphere, no lights, no textures: the shader needs only shaders/.
 const char* const kSphereScene = "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
@@ -35,34 +34,8 @@ const char* const kBrokenUserSdf = "// A user SDF with a mistake on line 5.\n"
                                    "    return sdSphere(p - x, 1.0) + wobble(p);\n"
                                    "}\n";
 
-class ShaderError : public ::testing::Test {
+class ShaderError : public ProgramInFolder {
 protected:
-    void SetUp() override
-    {
-        const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-        folder_ = fs::temp_directory_path() / ("raytracer-cli-ShaderError-" +
-                                               std::string(test->name()) + "-" +
-                                               std::to_string(std::random_device{}()));
-        fs::create_directories(folder_);
-    }
-    void TearDown() override { fs::remove_all(folder_); }
-
-    ProcessResult run(std::vector<std::string> arguments, ProcessOptions options = {}) const
-    {
-        arguments.insert(arguments.begin(), kRaytracer);
-        options.workingDirectory = folder_;
-        options.environment["DISPLAY"] = std::nullopt;
-        options.environment["WAYLAND_DISPLAY"] = std::nullopt;
-        return runProcess(arguments, options);
-    }
-
-    fs::path write(const fs::path& name, const std::string& text) const
-    {
-        fs::create_directories((folder_ / name).parent_path());
-        std::ofstream(folder_ / name, std::ios::binary) << text;
-        return folder_ / name;
-    }
-
     ProcessResult renderUserSdfScene() const
     {
         write("broken.glsl", kBrokenUserSdf);
@@ -70,7 +43,6 @@ protected:
         return run({scene.string(), "32", "24", "--spp", "1", "--output", "out.png"});
     }
 
-    fs::path folder_;
 };
 
 std::string describe(const ProcessResult& result)

@@ -1,6 +1,6 @@
 // Surfaces that touch: no light leaks through the contact and no acne appears along it.
 #include "hard/HardCaseSupport.h"
-#include "hard/PinholeCamera.h"
+#include "support/PinholeCamera.h"
 
 #include <gtest/gtest.h>
 
@@ -181,7 +181,7 @@ TEST(Contact, SphereRestingOnPlaneShowsNoAcneOnTheLitFloorAroundIt)
     request.samplesPerPixel = 256;
     request.settings.samplesPerFrame = 64;
     const hard::RenderOutput output = hard::render(request);
-    const hard::PinholeCamera pinhole(camera, request.width, request.height);
+    const testing_support::PinholeCamera pinhole(camera, request.width, request.height);
     const glm::dvec3 eye = pinhole.eye();
 
     auto floorPoint = [&](const glm::dvec3& direction) {
@@ -195,10 +195,10 @@ TEST(Contact, SphereRestingOnPlaneShowsNoAcneOnTheLitFloorAroundIt)
     // Floor seen past the sphere (the line of sight misses it by the margin) and lit past it
     // (so does the line from the floor point to the light).
     auto litFloorClearOfSphere = [&](const glm::dvec3& direction) {
-        if (direction.y >= 0.0 || hard::distanceToRay(centre, eye, direction) < 1.0 + kMargin)
+        if (direction.y >= 0.0 || testing_support::distanceToRay(centre, eye, direction) < 1.0 + kMargin)
             return false;
         const glm::dvec3 p = floorPoint(direction);
-        return hard::distanceToRay(centre, p, glm::normalize(light - p)) > 1.0 + kMargin;
+        return testing_support::distanceToRay(centre, p, glm::normalize(light - p)) > 1.0 + kMargin;
     };
 
     int compared = 0;

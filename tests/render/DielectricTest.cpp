@@ -5,7 +5,7 @@
 // they see exactly sky(reflected direction). Rays inside the window are reflected with
 // Schlick's probability F (R0 = 0.04, at the cosine on the air side) and otherwise refracted
 // out, their radiance scaled by 1.5^2 on entering the denser medium.
-#include "render/PinholeCamera.h"
+#include "support/PinholeCamera.h"
 #include "support/RenderRun.h"
 
 #include <gtest/gtest.h>

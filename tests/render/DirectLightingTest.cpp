@@ -2,7 +2,7 @@
 // environment, so that every pixel is rho / pi times the irradiance at the point it sees,
 // averaged over the pixel (the renderer jitters uniformly inside it). Compared pixel by
 // pixel against the renderer's own variance estimate.
-#include "render/PinholeCamera.h"
+#include "support/PinholeCamera.h"
 #include "support/RenderRun.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // White furnaces (pbrt's test of energy conservation): a sphere under a constant environment
 // of radiance 1 and nothing else. A surface that reflects all it receives vanishes (every
 // pixel 1); one of albedo a shows a; none may ever show more than 1.
-#include "render/PinholeCamera.h"
+#include "support/PinholeCamera.h"
 #include "support/RenderRun.h"
 
 #include <gtest/gtest.h>

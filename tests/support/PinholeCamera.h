@@ -1,9 +1,8 @@
 #pragma once
-// The scene format's camera on the CPU, for closed-form expectations in the torture suite:
-// pixel (i, j) covers uv = ((2 (i, j) - (w, h)) / h) tan(fovy / 2) with row 0 at the bottom
-// (GL), and the renderer jitters each sample uniformly inside it. Images are read back top
-// row first, so picture row y is GL row h - 1 - y. (tests/render has its own copy; the hard
-// cases build without the rest of the suite.)
+// The scene format's camera on the CPU, for closed-form expectations of the render tests and
+// the torture suite: pixel (i, j) covers uv = ((2 (i, j) - (w, h)) / h) tan(fovy / 2) with
+// row 0 at the bottom (GL), and the renderer jitters each sample uniformly inside it. Images
+// are read back top row first, so picture row y is GL row h - 1 - y.
 #include "scene/Scene.h"
 
 #include <glm/glm.hpp>
@@ -11,7 +10,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace hard {
+namespace testing_support {
 
 class PinholeCamera {
 public:
@@ -77,4 +76,16 @@ inline double distanceToRay(const glm::dvec3& point, const glm::dvec3& origin,
     return glm::length(toPoint - along * direction);
 }
 
-}  // namespace hard
+// Distance along the unit ray (origin, direction) to the sphere's near side, or -1.
+inline double raySphere(const glm::dvec3& origin, const glm::dvec3& direction,
+                        const glm::dvec3& center, double radius)
+{
+    const glm::dvec3 toCenter = center - origin;
+    const double along = glm::dot(toCenter, direction);
+    const double squaredMiss = glm::dot(toCenter, toCenter) - along * along;
+    if (squaredMiss > radius * radius || along <= 0.0)
+        return -1.0;
+    return along - std::sqrt(radius * radius - squaredMiss);
+}
+
+}  // namespace testing_support
