@@ -144,6 +144,7 @@ float cameraClearDistance(ivec2 pixel)
     return min(t, limit);
 }
 
+// `cameraClear`: where the camera ray's march may begin (cameraClearDistance, 0 from inside).
 PathState startPath(vec2 filmPoint, int cameraContaining, float cameraClear)
 {
     PathState path;
@@ -160,7 +161,7 @@ PathState startPath(vec2 filmPoint, int cameraContaining, float cameraClear)
     path.previousPosition = path.origin;
     path.scattering = 0;
     path.nullCrossings = 0;
-    path.marchStart = cameraContaining >= 0 ? 0.0 : cameraClear;
+    path.marchStart = cameraClear;
     return path;
 }
 

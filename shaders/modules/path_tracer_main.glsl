@@ -36,7 +36,8 @@ void main()
     // every path.)
     // A uniformly random point inside the pixel for each path: box-filtered anti-aliasing.
     int cameraContaining = cameraContainingObject();
-    float cameraClear = cameraClearDistance(pixel);
+    // A camera inside a solid marches its rays from the eye (the cone is not clear there).
+    float cameraClear = cameraContaining >= 0 ? 0.0 : cameraClearDistance(pixel);
     PathState path = startPath(vec2(pixel) + random2(), cameraContaining, cameraClear);
     int completed = 0;
     int segments = uSamplesPerFrame * maxSegmentsPerPath();

@@ -1,6 +1,6 @@
 // Ray-scene intersection by sphere tracing (Hart 1996) with over-relaxation (Keinert et al.,
 // "Enhanced Sphere Tracing", 2014). Needs sceneDistance and sceneDistanceAndObject from the
-// scene module.
+// scene module, and their culled forms with sceneRayCulling (ray_culling.glsl).
 //
 // Tolerances follow the ray, not the world: a hit is accepted when the distance falls below
 // a fraction (uHitTolerance) of the footprint of the ray's cone there, and never below

@@ -435,46 +435,40 @@ std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compile
     out << "// The scene: the union of its objects. Cheap objects first, so that bounded "
            "expensive\n// ones are skipped as often as possible. The culled forms leave out "
            "the pieces a ray's\n// mask clears (ray_culling.glsl).\n\n";
+    // A cheap object's distance, and the condition under which a bounded one is evaluated,
+    // with the object's culling bit tested in the culled forms.
+    auto cheapDistance = [&](const Entry& entry, bool culled) {
+        const std::string bit = culled ? objectBit(entry) : "";
+        return bit.empty() ? call(entry, culled)
+                           : bit + " ? " + call(entry, culled) + " : FLOAT_MAX";
+    };
+    auto boundedCondition = [&](const Entry& entry, bool culled) {
+        const std::string bit = culled ? objectBit(entry) : "";
+        return (bit.empty() ? "" : bit + " && ") + boundTest(entry.boundSlot);
+    };
     for (const bool culled : {false, true}) {
         const std::string suffix = culled ? "Culled" : "";
         const std::string maskParameter = culled ? ", uint mask" : "";
         out << "float sceneDistance" << suffix << "(vec3 p" << maskParameter
             << ")\n{\n    float d = FLOAT_MAX;\n";
-        for (const Entry& entry : cheap) {
-            const std::string bit = culled ? objectBit(entry) : "";
-            if (bit.empty())
-                out << "    d = min(d, " << call(entry, culled) << ");\n";
-            else
-                out << "    d = min(d, " << bit << " ? " << call(entry, culled)
-                    << " : FLOAT_MAX);\n";
-        }
-        for (const Entry& entry : bounded) {
-            const std::string bit = culled ? objectBit(entry) : "";
-            out << "    if (" << (bit.empty() ? "" : bit + " && ") << boundTest(entry.boundSlot)
-                << ")\n        d = min(d, " << call(entry, culled) << ");\n";
-        }
+        for (const Entry& entry : cheap)
+            out << "    d = min(d, " << cheapDistance(entry, culled) << ");\n";
+        for (const Entry& entry : bounded)
+            out << "    if (" << boundedCondition(entry, culled) << ")\n        d = min(d, "
+                << call(entry, culled) << ");\n";
         out << "    return d;\n}\n\n";
 
         out << "float sceneDistanceAndObject" << suffix << "(vec3 p" << maskParameter
             << ", out int nearest)\n{\n";
         out << "    float d = FLOAT_MAX;\n    nearest = -1;\n    float candidate;\n";
-        for (const Entry& entry : cheap) {
-            const std::string bit = culled ? objectBit(entry) : "";
-            if (bit.empty())
-                out << "    candidate = " << call(entry, culled) << ";\n";
-            else
-                out << "    candidate = " << bit << " ? " << call(entry, culled)
-                    << " : FLOAT_MAX;\n";
-            out << "    if (candidate < d) { d = candidate; nearest = " << entry.index << "; }\n";
-        }
-        for (const Entry& entry : bounded) {
-            const std::string bit = culled ? objectBit(entry) : "";
-            out << "    if (" << (bit.empty() ? "" : bit + " && ") << boundTest(entry.boundSlot)
-                << ") {\n"
+        for (const Entry& entry : cheap)
+            out << "    candidate = " << cheapDistance(entry, culled) << ";\n"
+                << "    if (candidate < d) { d = candidate; nearest = " << entry.index << "; }\n";
+        for (const Entry& entry : bounded)
+            out << "    if (" << boundedCondition(entry, culled) << ") {\n"
                 << "        candidate = " << call(entry, culled) << ";\n"
                 << "        if (candidate < d) { d = candidate; nearest = " << entry.index
                 << "; }\n    }\n";
-        }
         out << "    return d;\n}\n\n";
     }
 
