@@ -1,20 +1,14 @@
 // Lights: point lights and spherical area lights (emissive spheres), sampled for next-event
 // estimation. One light is chosen per shading point with probability proportional to its
-// power (the host computes the table once, not every pixel).
+// power (the host computes the table once, not every pixel). Whether the light is seen is
+// the geometry's business (shadowTransmittance, ray_queries.glsl).
 
 uniform int uUseMis;  // 1: combine light and BSDF sampling of sphere lights by MIS
 
-vec3 lightPosition(int light) { return uLights[3 * light].xyz; }
-float lightRadius(int light) { return uLights[3 * light].w; }
-vec3 lightEmission(int light) { return uLights[3 * light + 1].rgb; }
-float lightSelectionProbability(int light) { return uLights[3 * light + 1].w; }
-bool isPointLight(int light) { return uLights[3 * light + 2].y < 0.0; }
-int lightObject(int light) { return int(uLights[3 * light + 2].y); }
-
 int selectLight(float u)
 {
-    for (int light = 0; light < LIGHT_COUNT - 1; ++light)
-        if (u < uLights[3 * light + 2].x)
+    for (int light = 0; light < LIGHT_COUNT - 1 && loopIterationAllowed(); ++light)
+        if (u < lightCumulativeProbability(light))
             return light;
     return LIGHT_COUNT - 1;
 }
@@ -63,75 +57,23 @@ float distanceToSphereLight(vec3 p, vec3 direction, int light)
     return c / (b + sqrt(discriminant));
 }
 
-// An object that refracts nothing: a dielectric of index exactly 1, between equal media.
-// It has no interface, so light passes it unbent, tinted by its pigment.
-bool isNullInterface(int object)
-{
-    ivec4 record = uObjects[object];
-    vec4 finish = uFinishes[2 * record.y + 1];
-    return int(finish.x) == MATERIAL_DIELECTRIC && finish.y == 1.0;
-}
-
-// The fraction of light that travels from `origin` along `direction` over `maxDistance`:
-// zero when something blocks it, one when nothing does, the tint of any index-1 dielectric
-// it passes through. When the segment ends on an object (a sphere light), pass its index as
-// `target`: arriving within the tolerance of the target counts as reaching it. (Marching on
-// to the target's surface itself would crawl for ever on rays that meet it at grazing
-// angles, and be taken for occlusion.) A spent step budget counts as blocked, as a
-// spent budget counts as a hit for camera and path rays.
-vec3 shadowTransmittance(vec3 origin, vec3 direction, float maxDistance, float insideSign,
-                         float tolerance, int target)
-{
-    vec3 transmittance = vec3(1.0);
-    RayCulling culling = sceneRayCulling(origin, direction, tolerance, 0.0);
-    float clearDistance = min(maxDistance, culling.escapeDistance);
-    float t = 0.0;
-    for (int step = 0; step < uMaxMarchSteps; ++step) {
-        if (t >= clearDistance)
-            return transmittance;
-        vec3 p = origin + t * direction;
-        float radius = insideSign * sceneDistanceCulled(p, culling.mask);
-        if (radius < tolerance) {
-#if HAS_NULL_INTERFACES || HAS_SPHERE_LIGHTS
-            int nearest;
-            sceneDistanceAndObjectCulled(p, culling.mask, nearest);
-            if (nearest == target)
-                return transmittance;
-#endif
-#if HAS_NULL_INTERFACES
-            if (nearest >= 0 && isNullInterface(nearest)) {
-                transmittance *= pigmentColor(uObjects[nearest].x, p, -direction, 0.0, tolerance);
-                // Step through the surface; where the step only grazed it, the march goes
-                // on from outside and crosses further along.
-                t += 2.0 * tolerance;
-                insideSign = sceneDistance(origin + t * direction) < 0.0 ? -1.0 : 1.0;
-                continue;
-            }
-#endif
-            return vec3(0.0);
-        }
-        t += radius * uStepScale;
-    }
-    return vec3(0.0);
-}
-
 // Next-event estimation at a non-delta surface: radiance arriving from one chosen light
 // through `wo`'s side, times the BSDF and cosine, divided by the sampling densities.
-// `insideSign` is the side of the solid the incoming ray travelled in.
-vec3 directLighting(Surface s, vec3 wo, float tolerance, float insideSign)
+// `insideSign` is the side of the solid the incoming ray travelled in. `uSelection` picks the
+// light, `uPoint` the direction towards it (uniform on [0, 1), from the sampler).
+vec3 directLighting(Surface s, vec3 wo, float tolerance, float insideSign, float uSelection,
+                    vec2 uPoint)
 {
 #if LIGHT_COUNT == 0
     return vec3(0.0);
 #else
-    int light = selectLight(random01());
+    int light = selectLight(uSelection);
     float selection = lightSelectionProbability(light);
     if (!(selection > 0.0))
         return vec3(0.0);
     // Geometry is measured from the surface point; only the shadow ray starts off the
-    // surface, far enough not to hit it again.
+    // surface (shadowTransmittance), far enough not to hit it again.
     vec3 p = s.position;
-    float offset = 2.0 * tolerance;
-    vec3 shadowOrigin = p + s.facingNormal * offset;
 
 #if HAS_POINT_LIGHTS
     if (isPointLight(light)) {
@@ -139,13 +81,12 @@ vec3 directLighting(Surface s, vec3 wo, float tolerance, float insideSign)
         float distance = length(toLight);
         vec3 wi = toLight / distance;
         float cosI = dot(s.facingNormal, wi);
-        if (cosI <= 0.0 || distance <= offset)
+        if (cosI <= 0.0)
             return vec3(0.0);
         vec3 f = bsdfEvaluate(s, wo, wi);
         if (maxComponent(f) <= 0.0)
             return vec3(0.0);
-        vec3 transmittance =
-            shadowTransmittance(shadowOrigin, wi, distance - offset, insideSign, tolerance, -1);
+        vec3 transmittance = shadowTransmittance(s, wi, distance, insideSign, tolerance, -1);
         return f * cosI * transmittance * lightEmission(light) /
                (distance * distance * selection);
     }
@@ -156,7 +97,7 @@ vec3 directLighting(Surface s, vec3 wo, float tolerance, float insideSign)
     if (!sphereLightCone(p, light, oneMinusCosThetaMax))
         return vec3(0.0);
     vec3 axis = normalize(lightPosition(light) - p);
-    vec3 wi = basisAround(axis) * sampleUniformCone(random2(), oneMinusCosThetaMax);
+    vec3 wi = basisAround(axis) * sampleUniformCone(uPoint, oneMinusCosThetaMax);
     float cosI = dot(s.facingNormal, wi);
     if (cosI <= 0.0)
         return vec3(0.0);
@@ -164,8 +105,8 @@ vec3 directLighting(Surface s, vec3 wo, float tolerance, float insideSign)
     if (maxComponent(f) <= 0.0)
         return vec3(0.0);
     float distance = distanceToSphereLight(p, wi, light);
-    vec3 transmittance = shadowTransmittance(shadowOrigin, wi, distance, insideSign, tolerance,
-                                             lightObject(light));
+    vec3 transmittance =
+        shadowTransmittance(s, wi, distance, insideSign, tolerance, lightObject(light));
     if (maxComponent(transmittance) <= 0.0)
         return vec3(0.0);
     float lightPdf = selection * uniformConePdf(oneMinusCosThetaMax);

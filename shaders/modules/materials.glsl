@@ -90,7 +90,7 @@ float blinnPhongPdf(Surface s, vec3 wo, vec3 wi)
 
 // Chooses the glossy lobe with the Fresnel's probability, else the cosine-weighted diffuse
 // one; the weight uses the density of the mixture, so either choice is unbiased.
-BsdfSample blinnPhongSample(Surface s, vec3 wo)
+BsdfSample blinnPhongSample(Surface s, vec3 wo, float uLobe, vec2 uDirection)
 {
     vec3 n = s.facingNormal;
     float cosO = dot(n, wo);
@@ -99,13 +99,13 @@ BsdfSample blinnPhongSample(Surface s, vec3 wo)
     mat3 frame = basisAround(n);
     float specular = blinnPhongSpecularProbability(schlickFresnel(s.color, cosO));
     vec3 wi;
-    if (random01() < specular) {
-        vec3 h = frame * sampleBlinnPhongHalfVector(random2(), s.phongExponent);
+    if (uLobe < specular) {
+        vec3 h = frame * sampleBlinnPhongHalfVector(uDirection, s.phongExponent);
         if (dot(h, wo) <= 0.0)
             return invalidSample();
         wi = reflect(-wo, h);
     } else {
-        wi = frame * sampleCosineHemisphere(random2());
+        wi = frame * sampleCosineHemisphere(uDirection);
     }
     float cosI = dot(n, wi);
     if (cosI <= 0.0)
@@ -119,10 +119,10 @@ BsdfSample blinnPhongSample(Surface s, vec3 wo)
 
 // --- Lambertian ----------------------------------------------------------------------------
 
-BsdfSample lambertianSample(Surface s, vec3 wo)
+BsdfSample lambertianSample(Surface s, vec3 wo, vec2 uDirection)
 {
     vec3 n = s.facingNormal;
-    vec3 wi = basisAround(n) * sampleCosineHemisphere(random2());
+    vec3 wi = basisAround(n) * sampleCosineHemisphere(uDirection);
     float cosI = dot(n, wi);
     if (cosI <= 0.0)
         return invalidSample();
@@ -153,7 +153,7 @@ BsdfSample mirrorSample(Surface s, vec3 wo)
 // a path through a solid. Total internal reflection reflects.
 
 #if HAS_DIELECTRIC
-BsdfSample dielectricSample(Surface s, vec3 wo)
+BsdfSample dielectricSample(Surface s, vec3 wo, float uLobe)
 {
     float etaOutgoingSide = s.entering ? 1.0 : s.ior;
     float etaOtherSide = s.entering ? s.ior : 1.0;
@@ -163,7 +163,7 @@ BsdfSample dielectricSample(Surface s, vec3 wo)
     float cosTransmitted;
     float reflectance = dielectricReflectance(cosIncident, etaOutgoingSide, etaOtherSide,
                                               cosTransmitted);
-    if (random01() < reflectance)
+    if (uLobe < reflectance)
         return BsdfSample(true, reflect(-wo, n), s.color, 0.0, true, 1.0);
 
     float eta = etaOutgoingSide / etaOtherSide;
@@ -197,11 +197,13 @@ float bsdfPdf(Surface s, vec3 wo, vec3 wi)
     return 0.0;
 }
 
-BsdfSample bsdfSample(Surface s, vec3 wo)
+// `uLobe` chooses between lobes (or reflection and refraction), `uDirection` the direction
+// within one: both uniform on [0, 1), from the sampler.
+BsdfSample bsdfSample(Surface s, vec3 wo, float uLobe, vec2 uDirection)
 {
 #if HAS_DIELECTRIC
     if (s.material == MATERIAL_DIELECTRIC)
-        return dielectricSample(s, wo);
+        return dielectricSample(s, wo, uLobe);
 #endif
 #if HAS_MIRROR
     if (s.material == MATERIAL_MIRROR)
@@ -209,7 +211,7 @@ BsdfSample bsdfSample(Surface s, vec3 wo)
 #endif
 #if HAS_BLINN_PHONG
     if (s.material == MATERIAL_BLINN_PHONG)
-        return blinnPhongSample(s, wo);
+        return blinnPhongSample(s, wo, uLobe, uDirection);
 #endif
-    return lambertianSample(s, wo);
+    return lambertianSample(s, wo, uDirection);
 }

@@ -1,6 +1,8 @@
-// One frame of progressive rendering: each pixel reads its running estimate and random
-// state from the previous frame's targets, traces one path, and writes both anew (the two
-// target sets are ping-ponged by the host; no texture is read and written in one draw).
+// One frame of progressive rendering: each pixel reads its running estimate from the
+// previous frame's targets, traces its paths, and writes the estimate anew (the two target
+// sets are ping-ponged by the host; no texture is read and written in one draw). A path's
+// numbers depend only on (seed, pixel, sample index) (sampler.glsl), so nothing else needs
+// to persist between frames.
 //
 // The estimate is a running mean, mean += (x - mean) / n, not a running sum: a sum in
 // float32 loses the low digits of each new sample once it is large, the mean does not, so
@@ -10,12 +12,11 @@
 
 uniform sampler2D uPreviousEstimate;   // rgb: mean radiance, a: samples accumulated
 uniform sampler2D uPreviousMoments;    // rgb: sum of squared deviations, a: samples discarded
-uniform usampler2D uPreviousRandomState;
 uniform int uSamplesPerFrame;
+uniform int uSampleTarget;  // samples (kept and discarded) a pixel stops at; 0: no limit
 
 layout(location = 0) out vec4 outEstimate;
 layout(location = 1) out vec4 outMoments;
-layout(location = 2) out uvec4 outRandomState;
 
 bool isValidSample(vec3 value)
 {
@@ -27,22 +28,36 @@ void main()
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 estimate = texelFetch(uPreviousEstimate, pixel, 0);
     vec4 moments = texelFetch(uPreviousMoments, pixel, 0);
-    rngState = texelFetch(uPreviousRandomState, pixel, 0);
+    outEstimate = estimate;
+    outMoments = moments;
 
-    // uSamplesPerFrame paths, one after the other, in one loop of path segments: a pixel
-    // whose path ends early starts its next path at once instead of idling until its
-    // neighbours' longer paths end. (Neighbouring pixels run in lockstep on SIMD hardware,
-    // llvmpipe included, so a loop of whole paths costs the longest path of the group for
-    // every path.)
-    // A uniformly random point inside the pixel for each path: box-filtered anti-aliasing.
+    // uSamplesPerFrame paths, or fewer where the pixel would pass uSampleTarget (0: none),
+    // one after the other, in one loop of path segments: a pixel whose path ends early
+    // starts its next path at once instead of idling until its neighbours' longer paths
+    // end. (Neighbouring pixels run in lockstep on SIMD hardware, llvmpipe included, so a
+    // loop of whole paths costs the longest path of the group for every path.)
+    // A uniformly distributed point inside the pixel for each path: box-filtered
+    // anti-aliasing. Every path finished, kept or discarded, takes the next sample index.
+    int traced = int(estimate.a + moments.a);
+    int wanted = uSampleTarget > 0 ? min(uSamplesPerFrame, uSampleTarget - traced)
+                                   : uSamplesPerFrame;
+    if (wanted <= 0)
+        return;
     int cameraContaining = cameraContainingObject();
     // A camera inside a solid marches its rays from the eye (the cone is not clear there).
-    float cameraClear = cameraContaining >= 0 ? 0.0 : cameraClearDistance(pixel);
-    PathState path = startPath(vec2(pixel) + random2(), cameraContaining, cameraClear);
+    float cameraClear = cameraContaining >= 0 ? 0.0 : cameraMarchStart(pixel);
+    beginSample(pixel, uint(traced));
+    PathState path = startPath(vec2(pixel) + sample2D(SAMPLE_PIXEL), cameraContaining,
+                               cameraClear);
     int completed = 0;
-    int segments = uSamplesPerFrame * maxSegmentsPerPath();
-    for (int segment = 0; segment < segments; ++segment) {
-        if (continuePath(path))
+    int segments = wanted * maxSegmentsPerPath();
+    for (int segment = 0; segment < segments && loopIterationAllowed(); ++segment) {
+        bool going = continuePath(path);
+        // A path the loop budget cut short is abandoned (constants.glsl): the next frame
+        // traces its sample index again.
+        if (loopBudgetSpent())
+            break;
+        if (going)
             continue;
         vec3 value = path.radiance;
         if (isValidSample(value)) {
@@ -54,11 +69,11 @@ void main()
         } else {
             moments.a += 1.0;
         }
-        if (++completed == uSamplesPerFrame)
+        if (++completed == wanted)
             break;
-        path = startPath(vec2(pixel) + random2(), cameraContaining, cameraClear);
+        beginSample(pixel, uint(estimate.a + moments.a));
+        path = startPath(vec2(pixel) + sample2D(SAMPLE_PIXEL), cameraContaining, cameraClear);
     }
     outEstimate = estimate;
     outMoments = moments;
-    outRandomState = rngState;
 }

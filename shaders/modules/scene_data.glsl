@@ -17,8 +17,11 @@ uniform vec4 uFinishes[2 * FINISH_ARRAY_SIZE];
 
 // Per light, three vec4: (position or centre, radius), (intensity or radiance, selection
 // probability), (cumulative selection probability, object index or -1 for a point light,
-// -, -). Lights are chosen in proportion to their emitted power.
+// the sphere's culling bit or 0, -). Lights are chosen in proportion to their emitted power.
 uniform vec4 uLights[3 * LIGHT_ARRAY_SIZE];
+// The culling bits of every sphere light that has one: rays leave those out of their marches
+// and intersect the spheres exactly instead (ray_queries_traced.glsl).
+uniform uint uSphereLightPieces;
 
 const int PIGMENT_SOLID = 0;
 const int PIGMENT_CHECKER = 1;
@@ -28,3 +31,31 @@ const int MATERIAL_LAMBERTIAN = 0;
 const int MATERIAL_BLINN_PHONG = 1;
 const int MATERIAL_MIRROR = 2;
 const int MATERIAL_DIELECTRIC = 3;
+
+// --- accessors: the only places the records above are decoded ----------------------------
+
+int objectPigment(int object) { return uObjects[object].x; }
+int objectFinish(int object) { return uObjects[object].y; }
+int objectSphereLight(int object) { return uObjects[object].z; }
+
+vec3 finishEmission(int finish) { return uFinishes[2 * finish].rgb; }
+float finishPhongExponent(int finish) { return uFinishes[2 * finish].w; }
+int finishMaterial(int finish) { return int(uFinishes[2 * finish + 1].x); }
+float finishIor(int finish) { return uFinishes[2 * finish + 1].y; }
+
+vec3 lightPosition(int light) { return uLights[3 * light].xyz; }
+float lightRadius(int light) { return uLights[3 * light].w; }
+vec3 lightEmission(int light) { return uLights[3 * light + 1].rgb; }
+float lightSelectionProbability(int light) { return uLights[3 * light + 1].w; }
+float lightCumulativeProbability(int light) { return uLights[3 * light + 2].x; }
+bool isPointLight(int light) { return uLights[3 * light + 2].y < 0.0; }
+int lightObject(int light) { return int(uLights[3 * light + 2].y); }
+uint lightCullingBit(int light) { return uint(uLights[3 * light + 2].z); }
+
+// An object that refracts nothing: a dielectric of index exactly 1, between equal media.
+// It has no interface, so light passes it unbent, tinted by its pigment.
+bool isNullInterface(int object)
+{
+    int finish = objectFinish(object);
+    return finishMaterial(finish) == MATERIAL_DIELECTRIC && finishIor(finish) == 1.0;
+}

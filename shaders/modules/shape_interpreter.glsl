@@ -53,7 +53,7 @@ float primitiveDistance(int kind, int first, int extra, vec3 p)
         return sdSphere(p - a.xyz, a.w);
     if (kind == PRIMITIVE_POLYHEDRON) {
         float d = FLOAT_MAX;
-        for (int plane = 0; plane < extra; ++plane)
+        for (int plane = 0; plane < extra && loopIterationAllowed(); ++plane)
             d = min(d, sdHalfSpace(p, uShapeParameters[first + plane]));
         return d;
     }
@@ -107,7 +107,7 @@ float runShapeProgram(int start, vec3 p)
     float distances[SHAPE_STACK_DEPTH];
     int distanceCount = 0;
     vec3 point = p;
-    for (int pc = start; pc < SHAPE_PROGRAM_ARRAY_SIZE; ++pc) {
+    for (int pc = start; pc < SHAPE_PROGRAM_ARRAY_SIZE && loopIterationAllowed(); ++pc) {
         ivec4 instruction = uShapeProgram[pc];
         if (instruction.x == OPCODE_END)
             break;
@@ -125,7 +125,7 @@ float runShapeProgram(int start, vec3 p)
             int first = distanceCount - operands;
             float parameter = uShapeParameters[instruction.w].x;
             float d = distances[first];
-            for (int i = 1; i < operands; ++i)
+            for (int i = 1; i < operands && loopIterationAllowed(); ++i)
                 d = combine(instruction.y, d, distances[first + i], parameter);
             distanceCount = first;
             distances[distanceCount++] = d;
@@ -147,7 +147,7 @@ float objectDistance(int object, vec3 p)
 float sceneDistance(vec3 p)
 {
     float d = FLOAT_MAX;
-    for (int object = 0; object < OBJECT_COUNT; ++object)
+    for (int object = 0; object < OBJECT_COUNT && loopIterationAllowed(); ++object)
         if (mayBeNearer(object, p, d))
             d = min(d, objectDistance(object, p));
     return d;
@@ -157,7 +157,7 @@ float sceneDistanceAndObject(vec3 p, out int nearest)
 {
     float d = FLOAT_MAX;
     nearest = -1;
-    for (int object = 0; object < OBJECT_COUNT; ++object) {
+    for (int object = 0; object < OBJECT_COUNT && loopIterationAllowed(); ++object) {
         if (!mayBeNearer(object, p, d))
             continue;
         float candidate = objectDistance(object, p);
@@ -169,18 +169,64 @@ float sceneDistanceAndObject(vec3 p, out int nearest)
     return d;
 }
 
-// The general shader culls nothing (ray_culling.glsl): every object is evaluated everywhere.
+// The general shader culls nothing by bounds (ray_culling.glsl); the culled forms only leave
+// out the objects k < 32 whose mask bit k a caller cleared (the sphere lights rays meet
+// exactly).
 RayCulling sceneRayCulling(vec3 origin, vec3 direction, float tolerance0, float toleranceGrowth)
 {
     return noRayCulling();
 }
 
+bool objectInMask(int object, uint mask)
+{
+    return object >= 32 || (mask & (1u << uint(object))) != 0u;
+}
+
+// An object that is one polyhedron, untransformed: rays meet it by exact intersection
+// (exactPolyhedraIntersect), so the culled forms, which rays march, leave it out.
+bool isExactPolyhedron(int object)
+{
+    int start = uObjects[object].w;
+    ivec4 first = uShapeProgram[start];
+    return first.x == OPCODE_PRIMITIVE && first.y == PRIMITIVE_POLYHEDRON &&
+           uShapeProgram[start + 1].x == OPCODE_END;
+}
+
+void exactPolyhedraIntersect(vec3 origin, vec3 direction, float tMin, inout ExactHit hit)
+{
+    for (int object = 0; object < OBJECT_COUNT && loopIterationAllowed(); ++object) {
+        if (!isExactPolyhedron(object))
+            continue;
+        ivec4 primitive = uShapeProgram[uObjects[object].w];
+        ConvexInterval outside = wholeRay();
+        for (int plane = 0; plane < primitive.w && loopIterationAllowed(); ++plane)
+            clipOutsideHalfSpace(outside, origin, direction, uShapeParameters[primitive.z + plane]);
+        exactHalfSpaceUnion(outside, tMin, object, hit);
+    }
+}
+
 float sceneDistanceCulled(vec3 p, uint mask)
 {
-    return sceneDistance(p);
+    float d = FLOAT_MAX;
+    for (int object = 0; object < OBJECT_COUNT && loopIterationAllowed(); ++object)
+        if (objectInMask(object, mask) && !isExactPolyhedron(object) && mayBeNearer(object, p, d))
+            d = min(d, objectDistance(object, p));
+    return d;
 }
 
 float sceneDistanceAndObjectCulled(vec3 p, uint mask, out int nearest)
 {
-    return sceneDistanceAndObject(p, nearest);
+    float d = FLOAT_MAX;
+    nearest = -1;
+    for (int object = 0; object < OBJECT_COUNT && loopIterationAllowed(); ++object) {
+        if (!objectInMask(object, mask) || isExactPolyhedron(object) ||
+            !mayBeNearer(object, p, d))
+            continue;
+        float candidate = objectDistance(object, p);
+        if (candidate < d) {
+            d = candidate;
+            nearest = object;
+        }
+    }
+    return d;
 }

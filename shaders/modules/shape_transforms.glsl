@@ -16,3 +16,16 @@ float toWorldDistance(float localDistance, int first)
 {
     return localDistance * uShapeParameters[first + 3].w;
 }
+
+vec3 toLocalDirection(vec3 direction, int first)
+{
+    return vec3(dot(uShapeParameters[first].xyz, direction),
+                dot(uShapeParameters[first + 1].xyz, direction),
+                dot(uShapeParameters[first + 2].xyz, direction));
+}
+
+vec3 toWorldDirection(vec3 local, int first)
+{
+    return local.x * uShapeParameters[first].xyz + local.y * uShapeParameters[first + 1].xyz +
+           local.z * uShapeParameters[first + 2].xyz;
+}

@@ -132,6 +132,8 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
                 nonNegativeInteger(value(argument), "--rr-depth", 1024);
         } else if (argument == "--no-mis") {
             line.settings.multipleImportanceSampling = false;
+        } else if (argument == "--exact-geometry") {
+            line.settings.exactGeometry = true;
         } else if (argument == "--no-culling") {
             line.settings.rayCulling = false;
         } else if (argument == "--fresnel") {
@@ -142,6 +144,15 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
                 line.settings.dielectricFresnel = render::FresnelModel::Exact;
             else
                 throw UsageError("--fresnel must be 'schlick' or 'exact', not '" + model + "'");
+        } else if (argument == "--sampler") {
+            const std::string kind = value(argument);
+            if (kind == "sobol")
+                line.settings.sampler = render::SamplerKind::Sobol;
+            else if (kind == "independent")
+                line.settings.sampler = render::SamplerKind::Independent;
+            else
+                throw UsageError("--sampler must be 'sobol' or 'independent', not '" + kind +
+                                 "'");
         } else if (argument.size() > 1 && argument[0] == '-' &&
                    !(std::isdigit(static_cast<unsigned char>(argument[1])) || argument[1] == '.')) {
             throw UsageError("unknown option '" + argument + "' (see --help)");
@@ -202,6 +213,8 @@ accuracy (see docs/ACCURACY.md for what each costs):
   --rr-depth N          bounces before Russian roulette may end a path (default 4)
   --no-mis              light sampling only for sphere lights, no multiple importance sampling
   --fresnel MODEL       dielectric Fresnel: schlick (default) or exact
+  --sampler KIND        sobol (default): Owen-scrambled Sobol points for the pixel and the
+                        first four bounces; independent: random numbers for every decision
 
 shader:
   --features            print the features SCENE uses and exit
@@ -210,6 +223,9 @@ shader:
                         for the scene
   --no-culling          march every ray against every object (culling the objects a ray
                         cannot come near is exact; this only shows what it saves)
+  --exact-geometry      find surfaces by exact ray intersection instead of sphere tracing
+                        (spheres, polyhedra, boxes, cylinders and disks only): the reference
+                        for the sphere tracer's geometric error (docs/ACCURACY.md)
 
   --help                this text
   --version             the program's version

@@ -128,6 +128,10 @@ int runRender(const CommandLine& line)
             }
         }
     }
+    // Exactly --spp samples in every pixel, also where a frame's loop budget left one short.
+    if (line.samplesPerPixel && renderer.samplesPerPixel() >= *line.samplesPerPixel &&
+        !interrupt.requested())
+        renderer.completeSamples();
     const double renderSeconds = secondsSince(renderStart);
     progress.finish();
 
@@ -171,7 +175,7 @@ int printShader(const CommandLine& line)
 {
     const scene::Scene scene = scene::parseSceneFile(line.scene);
     const render::SceneShaderCode code = render::generateSceneShaderCode(
-        scene::dropInvisibleObjects(scene), line.settings.variant);
+        scene::dropInvisibleObjects(scene), line.settings.variant, line.settings.exactGeometry);
     std::cout << render::assemblePathTracerSource(code,
                                                   scene::FileLookup::dataDirectory() / "shaders")
                      .text();

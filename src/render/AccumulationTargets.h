@@ -3,7 +3,6 @@
 #include "gl/Texture.h"
 
 #include <array>
-#include <cstdint>
 
 namespace render {
 
@@ -11,15 +10,15 @@ namespace render {
 // writes the other, then they swap (reading and writing one texture in a draw is undefined).
 //   estimate      RGBA32F  rgb: running mean of the radiance, a: samples accumulated
 //   moments       RGBA32F  rgb: running sum of squared deviations (Welford), a: samples discarded
-//   randomState   RGBA32UI the pixel's xoshiro128** state
+// No random state persists: a sample's numbers follow from (seed, pixel, sample index), and
+// the index from the two counts (shaders/modules/sampler.glsl).
 class AccumulationTargets {
 public:
-    AccumulationTargets(int width, int height, std::uint64_t seed);
+    AccumulationTargets(int width, int height);
 
     struct Set {
         gl::Texture estimate;
         gl::Texture moments;
-        gl::Texture randomState;
         gl::Framebuffer framebuffer;
     };
 
@@ -37,9 +36,5 @@ private:
     std::array<Set, 2> sets_;
     int current_ = 0;
 };
-
-// The initial random state of pixel `pixelIndex` (row-major from the bottom row) for `seed`:
-// 128 bits from SplitMix64 (Steele et al. 2014), never all zero.
-std::array<std::uint32_t, 4> initialRandomState(std::uint64_t seed, std::uint64_t pixelIndex);
 
 }  // namespace render

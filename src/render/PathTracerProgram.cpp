@@ -32,11 +32,13 @@ ShaderSource assemblePathTracerSource(const SceneShaderCode& code, const fs::pat
     const bool specialized = specializesShapes(code.variant);
     module("constants.glsl");
     module("rng.glsl");
+    module("sampler.glsl");
     module("sampling.glsl");
     module("sdf_primitives.glsl");
     module("csg_operators.glsl");
     module("scene_data.glsl");
     module("ray_culling.glsl");
+    module("exact_shapes.glsl");
     if (code.features.transforms)
         module("shape_transforms.glsl");
     if (!code.userSdfFiles.empty()) {
@@ -54,6 +56,13 @@ ShaderSource assemblePathTracerSource(const SceneShaderCode& code, const fs::pat
     module("fresnel.glsl");
     module("pigments.glsl");
     module("materials.glsl");
+    module("ray_queries.glsl");
+    if (code.exactGeometry) {
+        source.add("<generated: the scene's exact intersections>", code.exactFunctions);
+        module("ray_queries_exact.glsl");
+    } else {
+        module("ray_queries_traced.glsl");
+    }
     module("lights.glsl");
     module("environment.glsl");
     module("integrator.glsl");

@@ -42,12 +42,13 @@ void checkRenderSize(int width, int height)
 ProgressiveRenderer::ProgressiveRenderer(const scene::Scene& scene, int width, int height,
                                          const RenderSettings& settings)
     : settings_(settings),
-      code_(generateSceneShaderCode(scene::dropInvisibleObjects(scene), settings.variant)),
+      code_(generateSceneShaderCode(scene::dropInvisibleObjects(scene), settings.variant,
+                                    settings.exactGeometry)),
       uniforms_(packSceneUniforms(scene::dropInvisibleObjects(scene), code_)),
       program_((checkRenderSize(width, height),
                 std::make_unique<PathTracerProgram>(code_, shaderDirectory()))),
       pigmentTextures_(loadPigmentTextures(uniforms_.textureLayers)),
-      targets_(width, height, settings.seed),
+      targets_(width, height),
       toneMapper_(shaderDirectory())
 {
     rowsPerBand_ = height;
@@ -61,7 +62,6 @@ void ProgressiveRenderer::uploadAll()
     const gl::Program& program = program_->program();
     glUniform1i(program.uniformLocation("uPreviousEstimate"), 0);
     glUniform1i(program.uniformLocation("uPreviousMoments"), 1);
-    glUniform1i(program.uniformLocation("uPreviousRandomState"), 2);
     glUniform1i(program.uniformLocation("uPigmentTextures"), 3);
     glUniform1f(program.uniformLocation("uPigmentTextureSize"),
                 static_cast<float>(pigmentTextures_.size));
@@ -71,7 +71,8 @@ void ProgressiveRenderer::uploadAll()
 void ProgressiveRenderer::setScene(const scene::Scene& original)
 {
     const scene::Scene scene = scene::dropInvisibleObjects(original);
-    SceneShaderCode code = generateSceneShaderCode(scene, settings_.variant);
+    SceneShaderCode code =
+        generateSceneShaderCode(scene, settings_.variant, settings_.exactGeometry);
     SceneUniforms uniforms = packSceneUniforms(scene, code);
     const bool sameStructure = code.defines == code_.defines &&
                                code.sceneFunctions == code_.sceneFunctions &&
@@ -88,7 +89,7 @@ void ProgressiveRenderer::setScene(const scene::Scene& original)
 
 void ProgressiveRenderer::restartAccumulation()
 {
-    targets_ = AccumulationTargets(width(), height(), settings_.seed);
+    targets_ = AccumulationTargets(width(), height());
     frames_ = 0;
     samplesPerPixel_ = 0;
 }
@@ -97,15 +98,46 @@ bool ProgressiveRenderer::renderFrame(const std::function<bool()>& keepGoing, in
 {
     if (samples <= 0)
         samples = std::max(1, settings_.samplesPerFrame);
+    if (!drawFrame(keepGoing, samples, samplesPerPixel_ + samples))
+        return false;
+    ++frames_;
+    samplesPerPixel_ += samples;
+    return true;
+}
+
+void ProgressiveRenderer::completeSamples()
+{
+    // A pixel short of the count is short by the paths of one frame's cut at most; a few
+    // frames make up any run of them.
+    for (int frame = 0; frame < 16 && fewestSamples() < samplesPerPixel_; ++frame)
+        drawFrame({}, samplesPerPixel_, samplesPerPixel_);
+}
+
+int ProgressiveRenderer::fewestSamples() const
+{
+    const io::Image estimate = readTarget(targets_.previous().estimate, 4);
+    const io::Image moments = readTarget(targets_.previous().moments, 4);
+    float fewest = static_cast<float>(samplesPerPixel_);
+    for (int y = 0; y < height(); ++y)
+        for (int x = 0; x < width(); ++x)
+            fewest = std::min(fewest, estimate.at(x, y, 3) + moments.at(x, y, 3));
+    return static_cast<int>(fewest + 0.5f);
+}
+
+// Traces up to `samples` paths per pixel, none beyond `target` samples in all, so that a
+// pixel a frame left short catches up.
+bool ProgressiveRenderer::drawFrame(const std::function<bool()>& keepGoing, int samples,
+                                    int target)
+{
     const auto frameStart = std::chrono::steady_clock::now();
     const AccumulationTargets::Set& source = targets_.previous();
     const AccumulationTargets::Set& destination = targets_.next();
 
     program_->program().use();
-    glUniform1i(program_->program().uniformLocation("uSamplesPerFrame"), samples);
+    glUniform1i(program_->program().uniformLocation("uSamplesPerFrame"), 2 * samples);
+    glUniform1i(program_->program().uniformLocation("uSampleTarget"), target);
     source.estimate.bind(0);
     source.moments.bind(1);
-    source.randomState.bind(2);
     pigmentTextures_.texture.bind(3);
     destination.framebuffer.bindForDrawing();
     // The viewport stays the whole image so gl_FragCoord is the pixel; the scissor picks
@@ -141,8 +173,6 @@ bool ProgressiveRenderer::renderFrame(const std::function<bool()>& keepGoing, in
     if (frames_ == 0)
         firstFrameSeconds_ = frameSeconds;
     lastSecondsPerSample_ = frameSeconds / samples;
-    ++frames_;
-    samplesPerPixel_ += samples;
     return true;
 }
 

@@ -26,12 +26,20 @@ public:
     ProgressiveRenderer(const scene::Scene& scene, int width, int height,
                         const RenderSettings& settings);
 
-    // Adds one sample per pixel. The frame is drawn in horizontal bands sized to take about
-    // settings.secondsPerBand each (a frame of a heavy scene on a software rasteriser can take
-    // many seconds); between bands `keepGoing` is asked whether to go on. When it says no,
-    // the partial frame is dropped, the image stays as it was, and false is returned.
-    // `samples` paths per pixel are traced in the frame (default: settings.samplesPerFrame).
+    // Adds `samples` samples per pixel (default: settings.samplesPerFrame). The frame is
+    // drawn in horizontal bands sized to take about settings.secondsPerBand each (a frame of
+    // a heavy scene on a software rasteriser can take many seconds); between bands
+    // `keepGoing` is asked whether to go on. When it says no, the partial frame is dropped,
+    // the image stays as it was, and false is returned. A pixel may end a frame a sample or
+    // two short, where the GPU's loop budget cut a path (shaders/modules/constants.glsl);
+    // the next frame makes up for it, and completeSamples() evens every pixel out.
     bool renderFrame(const std::function<bool()>& keepGoing = {}, int samples = 0);
+
+    // Renders until every pixel holds samplesPerPixel() samples exactly (kept or discarded).
+    void completeSamples();
+
+    // The fewest samples (kept and discarded) any pixel holds.
+    int fewestSamples() const;
 
     // Replaces the scene: if its shader code is unchanged (only values differ) the uniforms
     // are re-uploaded; otherwise the shader is rebuilt. Either way accumulation restarts.
@@ -66,6 +74,7 @@ private:
     void buildProgram();
     void uploadAll();
     void restartAccumulation();
+    bool drawFrame(const std::function<bool()>& keepGoing, int samples, int target);
     io::Image readTarget(const gl::Texture& texture, int channels) const;
 
     RenderSettings settings_;

@@ -7,6 +7,10 @@ namespace render {
 
 enum class FresnelModel { Schlick, Exact };
 
+// Where a path's random decisions come from (shaders/modules/sampler.glsl): every one from
+// the sample's own random stream, or the first bounces' from Owen-scrambled Sobol points.
+enum class SamplerKind { Independent, Sobol };
+
 // Every setting that trades accuracy for time. All are uniforms except the shader variant:
 // changing one never recompiles. Defaults are the seed's choices where it made one.
 struct RenderSettings {
@@ -30,7 +34,12 @@ struct RenderSettings {
     // it changes the time a march takes, not what it meets.
     bool rayCulling = true;
     FresnelModel dielectricFresnel = FresnelModel::Schlick;
+    SamplerKind sampler = SamplerKind::Sobol;
     ShaderVariant variant = ShaderVariant::Specialized;
+    // Find surfaces by exact intersection instead of sphere tracing, for the shapes that
+    // have a closed form (shaders/modules/ray_queries_exact.glsl): the reference that the
+    // tests and docs/ACCURACY.md judge the sphere tracer's geometric error against.
+    bool exactGeometry = false;
     std::uint64_t seed = 1;
     // Paths per pixel in one frame (one draw); the running mean is updated after each, so
     // the result is the same as that many frames of one.

@@ -1,5 +1,6 @@
 #include "render/SceneShaderGenerator.h"
 
+#include "render/ExactSceneIntersection.h"
 #include "scene/SceneBounds.h"
 
 #include <algorithm>
@@ -91,35 +92,6 @@ public:
             body = emitGeometryBody(shape.geometry);
         }
         functions_ << "float " << name << "(vec3 p)\n{\n" << body << "}\n\n";
-        return name;
-    }
-
-    // A top-level polyhedron whose planes a ray culls one by one: its function takes the
-    // ray's culling mask, plane i counting only where bit planeBits[i] is set (the unculled
-    // scene passes every bit). Returns the function's name; `planeSlots` receives where
-    // each normalised local plane lies.
-    std::string emitCullablePolyhedron(const Shape& shape, const Polyhedron& polyhedron,
-                                       const std::vector<std::uint32_t>& planeBits,
-                                       std::vector<int>& planeSlots)
-    {
-        const std::string name = "shape" + std::to_string(nextFunction_++);
-        std::string frame;
-        if (shape.transform)
-            frame = std::to_string(allocateTransform(*shape.transform));
-        std::ostringstream body;
-        body << "    vec3 q = " << (frame.empty() ? "p" : "toLocalPoint(p, " + frame + ")")
-             << ";\n    float d = FLOAT_MAX;\n";
-        planeSlots.clear();
-        for (std::size_t i = 0; i < polyhedron.planes.size(); ++i) {
-            const glm::vec4& plane = polyhedron.planes[i];
-            const int s = allocate({plane / glm::length(glm::vec3(plane))});
-            planeSlots.push_back(s);
-            body << "    d = min(d, (mask & " << planeBits[i] << "u) != 0u ? sdHalfSpace(q, "
-                 << slot(s) << ") : FLOAT_MAX);\n";
-        }
-        body << "    return " << (frame.empty() ? "d" : "toWorldDistance(d, " + frame + ")")
-             << ";\n";
-        functions_ << "float " << name << "(vec3 p, uint mask)\n{\n" << body.str() << "}\n\n";
         return name;
     }
 
@@ -318,14 +290,10 @@ struct CullingPiece {
 
 constexpr int kCullingBits = 32;
 
-// A plane n.x + w <= 0 (unit n) of a shape's local space, in world space, where the shape
-// is placed by world = R (s local) + T: n' = R n, w' = s w - n'.T.
+// A plane n.x + w <= 0 (unit n) of a shape's local space, in world space.
 glm::vec4 worldPlane(const glm::vec4& localPlane, const std::optional<Transform>& transform)
 {
-    if (!transform)
-        return localPlane;
-    const glm::vec3 normal = transform->rotation * glm::vec3(localPlane);
-    return glm::vec4(normal, transform->scale * localPlane.w - glm::dot(normal, transform->translation));
+    return transform ? applyTransformToPlane(*transform, localPlane) : localPlane;
 }
 
 // The half-space an infinite cone lies in, scaled by how much slower than the distance to
@@ -342,68 +310,75 @@ std::optional<glm::vec4> coneHalfSpace(const Cone& cone, const std::optional<Tra
     return std::abs(unit.y) * worldPlane(local, transform);
 }
 
-std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compiler)
+// The scene's distance functions. Top-level polyhedra (unions of half-spaces: floors,
+// walls, rooms) are in the full forms, which every point query uses, but not in the culled
+// forms that rays march: rays meet them by exact intersection instead (the generated
+// exactPolyhedraIntersect), so a march ends at the polyhedron's exact crossing and never
+// creeps along a wall or a floor seen at grazing angles, and never stops short of one at a
+// concave edge.
+std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compiler,
+                                      std::vector<std::uint32_t>& objectCullingBits)
 {
     struct Entry {
         std::size_t index;
         std::string function;
-        bool takesMask;  // a polyhedron's function, culled plane by plane
+        bool exact;      // a polyhedron met by exact intersection: absent from culled forms
         int boundSlot;   // -1: evaluated everywhere
         std::vector<CullingPiece> pieces;  // empty: never culled
     };
     std::vector<Entry> cheap;
     std::vector<Entry> bounded;
+    std::ostringstream polyhedra;
     int nextBit = 0;
-    auto takeBits = [&](std::size_t count) {
-        std::vector<std::uint32_t> bits;
-        if (nextBit + static_cast<int>(count) > kCullingBits)
-            return bits;
-        for (std::size_t i = 0; i < count; ++i)
-            bits.push_back(1u << nextBit++);
-        return bits;
+    auto takeBit = [&]() -> std::optional<std::uint32_t> {
+        if (nextBit == kCullingBits)
+            return std::nullopt;
+        return 1u << nextBit++;
     };
+    // Sphere lights take their bits first: rays leave every light that has one out of their
+    // marches and meet it exactly instead (ray_queries_traced.glsl).
+    std::map<std::size_t, std::uint32_t> lightBits;
+    for (const SphereLight& light : sphereLights(scene))
+        if (const auto bit = takeBit())
+            lightBits[static_cast<std::size_t>(light.object)] = *bit;
+    objectCullingBits.assign(scene.objects.size(), 0u);
     bool everyObjectCulled = true;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         const Shape& shape = object.shape;
         const ShapeBound bound = boundShape(shape);
         const int boundSlot = bound.finite ? compiler.allocateBound(bound) : -1;
-        Entry entry{i, {}, false, -1, {}};
-        const auto* polyhedron = std::get_if<Polyhedron>(&shape.geometry);
-        const std::vector<std::uint32_t> planeBits =
-            polyhedron ? takeBits(polyhedron->planes.size()) : std::vector<std::uint32_t>{};
-        if (polyhedron && !planeBits.empty()) {
-            std::vector<int> planeSlots;
-            entry.function =
-                compiler.emitCullablePolyhedron(shape, *polyhedron, planeBits, planeSlots);
-            entry.takesMask = true;
-            for (std::size_t k = 0; k < planeSlots.size(); ++k) {
-                // The distance function's own normalised plane where it is already in world
-                // space.
-                const int cullSlot =
-                    shape.transform
-                        ? compiler.allocateValue(worldPlane(
-                              polyhedron->planes[k] / glm::length(glm::vec3(polyhedron->planes[k])),
-                              shape.transform))
-                        : planeSlots[k];
-                entry.pieces.push_back({true, cullSlot, planeBits[k]});
+        Entry entry{i, compiler.emitFunction(shape), false, -1, {}};
+        if (const auto* polyhedron = std::get_if<Polyhedron>(&shape.geometry)) {
+            entry.exact = true;
+            polyhedra << "    {\n        ConvexInterval outside = wholeRay();\n";
+            for (const glm::vec4& plane : polyhedron->planes) {
+                const glm::vec4 unit = plane / glm::length(glm::vec3(plane));
+                polyhedra << "        clipOutsideHalfSpace(outside, origin, direction, "
+                          << slot(compiler.allocateValue(worldPlane(unit, shape.transform)))
+                          << ");\n";
             }
-        } else {
-            entry.function = compiler.emitFunction(shape);
-            std::optional<CullingPiece> piece;
-            const auto* cone = std::get_if<Cone>(&shape.geometry);
-            if (bound.finite) {
-                piece = CullingPiece{false, boundSlot, 0u};
-            } else if (cone) {
-                if (const auto plane = coneHalfSpace(*cone, shape.transform))
-                    piece = CullingPiece{true, compiler.allocateValue(*plane), 0u};
-            }
-            if (piece) {
-                const std::vector<std::uint32_t> bit = takeBits(1);
-                if (!bit.empty()) {
-                    piece->bit = bit[0];
-                    entry.pieces.push_back(*piece);
-                }
+            polyhedra << "        exactHalfSpaceUnion(outside, tMin, " << i << ", hit);\n    }\n";
+            cheap.push_back(entry);
+            continue;
+        }
+        std::optional<CullingPiece> piece;
+        const auto* cone = std::get_if<Cone>(&shape.geometry);
+        if (bound.finite) {
+            piece = CullingPiece{false, boundSlot, 0u};
+        } else if (cone) {
+            if (const auto plane = coneHalfSpace(*cone, shape.transform))
+                piece = CullingPiece{true, compiler.allocateValue(*plane), 0u};
+        }
+        if (piece) {
+            const auto reserved = lightBits.find(i);
+            const std::optional<std::uint32_t> bit =
+                reserved != lightBits.end() ? std::optional<std::uint32_t>(reserved->second)
+                                            : takeBit();
+            if (bit) {
+                piece->bit = *bit;
+                entry.pieces.push_back(*piece);
+                objectCullingBits[i] = *bit;
             }
         }
         if (entry.pieces.empty())
@@ -418,29 +393,25 @@ std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compile
     auto boundTest = [](int boundSlot) {
         return "sdSphere(p - " + slot(boundSlot) + ".xyz, " + slot(boundSlot) + ".w) < d";
     };
-    // An object's bit test in the culled functions: a polyhedron tests its planes itself.
+    // An object's bit test in the culled functions.
     auto objectBit = [](const Entry& entry) -> std::string {
-        if (entry.takesMask || entry.pieces.empty())
+        if (entry.pieces.empty())
             return {};
         return "(mask & " + std::to_string(entry.pieces[0].bit) + "u) != 0u";
     };
-    auto call = [](const Entry& entry, bool culled) {
-        if (!entry.takesMask)
-            return entry.function + "(p)";
-        return entry.function + (culled ? "(p, mask)" : "(p, 0xffffffffu)");
-    };
+    auto call = [](const Entry& entry) { return entry.function + "(p)"; };
 
     std::ostringstream out;
     out << compiler.functions();
     out << "// The scene: the union of its objects. Cheap objects first, so that bounded "
-           "expensive\n// ones are skipped as often as possible. The culled forms leave out "
-           "the pieces a ray's\n// mask clears (ray_culling.glsl).\n\n";
+           "expensive\n// ones are skipped as often as possible. The culled forms, which rays "
+           "march, leave out\n// the pieces a ray's mask clears (ray_culling.glsl) and the "
+           "polyhedra, which rays meet\n// exactly (exactPolyhedraIntersect).\n\n";
     // A cheap object's distance, and the condition under which a bounded one is evaluated,
     // with the object's culling bit tested in the culled forms.
     auto cheapDistance = [&](const Entry& entry, bool culled) {
         const std::string bit = culled ? objectBit(entry) : "";
-        return bit.empty() ? call(entry, culled)
-                           : bit + " ? " + call(entry, culled) + " : FLOAT_MAX";
+        return bit.empty() ? call(entry) : bit + " ? " + call(entry) + " : FLOAT_MAX";
     };
     auto boundedCondition = [&](const Entry& entry, bool culled) {
         const std::string bit = culled ? objectBit(entry) : "";
@@ -452,25 +423,34 @@ std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compile
         out << "float sceneDistance" << suffix << "(vec3 p" << maskParameter
             << ")\n{\n    float d = FLOAT_MAX;\n";
         for (const Entry& entry : cheap)
-            out << "    d = min(d, " << cheapDistance(entry, culled) << ");\n";
+            if (!(culled && entry.exact))
+                out << "    d = min(d, " << cheapDistance(entry, culled) << ");\n";
         for (const Entry& entry : bounded)
             out << "    if (" << boundedCondition(entry, culled) << ")\n        d = min(d, "
-                << call(entry, culled) << ");\n";
+                << call(entry) << ");\n";
         out << "    return d;\n}\n\n";
 
         out << "float sceneDistanceAndObject" << suffix << "(vec3 p" << maskParameter
             << ", out int nearest)\n{\n";
         out << "    float d = FLOAT_MAX;\n    nearest = -1;\n    float candidate;\n";
         for (const Entry& entry : cheap)
-            out << "    candidate = " << cheapDistance(entry, culled) << ";\n"
-                << "    if (candidate < d) { d = candidate; nearest = " << entry.index << "; }\n";
+            if (!(culled && entry.exact))
+                out << "    candidate = " << cheapDistance(entry, culled) << ";\n"
+                    << "    if (candidate < d) { d = candidate; nearest = " << entry.index
+                    << "; }\n";
         for (const Entry& entry : bounded)
             out << "    if (" << boundedCondition(entry, culled) << ") {\n"
-                << "        candidate = " << call(entry, culled) << ";\n"
+                << "        candidate = " << call(entry) << ";\n"
                 << "        if (candidate < d) { d = candidate; nearest = " << entry.index
                 << "; }\n    }\n";
         out << "    return d;\n}\n\n";
     }
+
+    out << "// The first crossing in (tMin, hit.t) of every top-level polyhedron, exactly "
+           "(exact_shapes.glsl).\n"
+           "void exactPolyhedraIntersect(vec3 origin, vec3 direction, float tMin, inout "
+           "ExactHit hit)\n{\n"
+        << polyhedra.str() << "}\n\n";
 
     out << "RayCulling sceneRayCulling(vec3 origin, vec3 direction, float tolerance0,\n"
            "                           float toleranceGrowth)\n{\n"
@@ -513,10 +493,12 @@ bool specializesShapes(ShaderVariant variant)
     return variant == ShaderVariant::Specialized || variant == ShaderVariant::ShapesOnly;
 }
 
-SceneShaderCode generateSceneShaderCode(const Scene& scene, ShaderVariant variant)
+SceneShaderCode generateSceneShaderCode(const Scene& scene, ShaderVariant variant,
+                                        bool exactGeometry)
 {
     SceneShaderCode code;
     code.variant = variant;
+    code.exactGeometry = exactGeometry;
     const bool specialized = specializesShapes(variant);
     code.features = specializesFeatures(variant) ? analyseFeatures(scene)
                                                  : SceneFeatures::everything(scene);
@@ -528,7 +510,7 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, ShaderVariant varian
 
     ShapeCompiler compiler(code);
     if (specialized) {
-        code.sceneFunctions = specializedSceneFunctions(scene, compiler);
+        code.sceneFunctions = specializedSceneFunctions(scene, compiler, code.objectCullingBits);
     } else {
         for (const SceneObject& object : scene.objects) {
             code.objectProgramStart.push_back(static_cast<int>(code.shapeProgram.size()));
@@ -541,6 +523,12 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, ShaderVariant varian
         }
         // Declared before the interpreter module, which calls it.
         code.sceneFunctions = userSdfDispatcher(compiler.userSdfIds());
+        // The interpreter's culled forms leave out object k < 32 where mask bit k is clear.
+        for (std::size_t i = 0; i < scene.objects.size(); ++i)
+            code.objectCullingBits.push_back(i < 32 ? 1u << i : 0u);
+    }
+    if (exactGeometry) {
+        code.exactFunctions = generateExactSceneIntersection(scene, code.shapeParameters);
     }
 
     const SceneFeatures& f = code.features;

@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -37,13 +38,21 @@ struct SceneShaderCode {
     std::string defines;            // lines for the preamble, after #version
     std::vector<std::filesystem::path> userSdfFiles;
     std::string sceneFunctions;     // sceneDistance, sceneDistanceAndObject
+    // --exact-geometry: rays find surfaces by exact intersection (exactSceneIntersect,
+    // below) instead of sphere tracing.
+    bool exactGeometry = false;
+    std::string exactFunctions;
 
     std::vector<glm::vec4> shapeParameters;
     std::vector<glm::ivec4> shapeProgram;  // General only
     std::vector<int> objectProgramStart;   // General only: per object
     std::vector<glm::vec4> objectBounds;   // General only: per object, radius < 0 for none
+    // Per object: the culling-mask bit that leaves the whole object out of a culled distance
+    // (ray_culling.glsl), or 0 where none does.
+    std::vector<std::uint32_t> objectCullingBits;
 };
 
-SceneShaderCode generateSceneShaderCode(const scene::Scene& scene, ShaderVariant variant);
+SceneShaderCode generateSceneShaderCode(const scene::Scene& scene, ShaderVariant variant,
+                                        bool exactGeometry = false);
 
 }  // namespace render

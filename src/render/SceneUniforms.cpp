@@ -144,7 +144,13 @@ SceneUniforms packSceneUniforms(const Scene& scene, const SceneShaderCode& code)
             lightOfObject[light.object] = static_cast<int>(i);
             packed.lights.emplace_back(light.center, light.radius);
             packed.lights.emplace_back(light.radiance, probability);
-            packed.lights.emplace_back(cdf, static_cast<float>(light.object), 0.0f, 0.0f);
+            const std::uint32_t bit = static_cast<std::size_t>(light.object) <
+                                              code.objectCullingBits.size()
+                                          ? code.objectCullingBits[light.object]
+                                          : 0u;
+            packed.lights.emplace_back(cdf, static_cast<float>(light.object),
+                                       static_cast<float>(bit), 0.0f);
+            packed.sphereLightPieces |= bit;
         }
     }
 
@@ -197,6 +203,10 @@ void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
     setInt(program, "uUseMis", settings.multipleImportanceSampling ? 1 : 0);
     setInt(program, "uRayCulling", settings.rayCulling ? 1 : 0);
     setInt(program, "uExactFresnel", settings.dielectricFresnel == FresnelModel::Exact ? 1 : 0);
+    setInt(program, "uSampler", settings.sampler == SamplerKind::Sobol ? 1 : 0);
+    glUniform1ui(program.uniformLocation("uSphereLightPieces"), uniforms.sphereLightPieces);
+    glUniform2ui(program.uniformLocation("uSeed"), static_cast<GLuint>(settings.seed),
+                 static_cast<GLuint>(settings.seed >> 32));
 }
 
 }  // namespace render

@@ -6,6 +6,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <filesystem>
 #include <vector>
 
@@ -22,6 +23,8 @@ struct SceneUniforms {
     std::vector<glm::vec4> pigments;
     std::vector<glm::vec4> finishes;
     std::vector<glm::vec4> lights;
+    // The culling bits of the sphere lights that have one (scene_data.glsl).
+    std::uint32_t sphereLightPieces = 0;
     // Image files in texture-array layer order; pigments refer to them by layer.
     std::vector<std::filesystem::path> textureLayers;
 

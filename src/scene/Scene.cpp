@@ -41,6 +41,12 @@ glm::vec3 applyTransform(const Transform& transform, const glm::vec3& local)
     return transform.rotation * (transform.scale * local) + transform.translation;
 }
 
+glm::vec4 applyTransformToPlane(const Transform& transform, const glm::vec4& localPlane)
+{
+    const glm::vec3 normal = transform.rotation * glm::vec3(localPlane);
+    return glm::vec4(normal, transform.scale * localPlane.w - glm::dot(normal, transform.translation));
+}
+
 glm::vec3 skyRadiance(const glm::vec3& unitDirection)
 {
     return 0.5f * glm::vec3(0.7f, 0.8f, 1.0f) * (1.0f - 0.5f * unitDirection.y);

@@ -142,6 +142,9 @@ struct Transform {
 // The transform that applies `inner` first, then `outer`.
 Transform compose(const Transform& outer, const Transform& inner);
 glm::vec3 applyTransform(const Transform& transform, const glm::vec3& local);
+// A plane dot(n, x) + w = 0 (unit n) of a shape's local space, in world space: n' = R n,
+// w' = s w - dot(n', T).
+glm::vec4 applyTransformToPlane(const Transform& transform, const glm::vec4& localPlane);
 
 using Geometry =
     std::variant<Sphere, Polyhedron, Box, Torus, Cone, Cylinder, Disk, UserSdf, CsgNode>;

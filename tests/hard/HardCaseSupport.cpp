@@ -33,6 +33,7 @@ RenderOutput render(const RenderRequest& request)
     while (renderer.samplesPerPixel() < request.samplesPerPixel)
         renderer.renderFrame({}, std::min(request.settings.samplesPerFrame,
                                           request.samplesPerPixel - renderer.samplesPerPixel()));
+    renderer.completeSamples();
     RenderOutput output;
     output.radiance = renderer.radiance();
     output.statistics = renderer.sampleStatistics();

@@ -141,8 +141,12 @@ Histograms histogramsFor(const SamplingCase& samplingCase, const GridLayout& gri
 
     double samples = 0.0;
     for (int draw = 0; draw < kDraws; ++draw) {
+        // The renderer's own sampler: every fragment a pixel of its own, at sample `draw`.
+        SamplerChoice choice;
+        choice.sampleIndex = draw;
         const auto values = sampler.sampleDirections(samplingCase, kSampleSide, kSampleSide,
-                                                     1000 + static_cast<std::uint64_t>(draw));
+                                                     1000 + static_cast<std::uint64_t>(draw),
+                                                     choice);
         for (const glm::vec4& value : values) {
             samples += 1.0;
             if (value.w < 0.0f) {
@@ -349,8 +353,10 @@ TEST_P(BlinnPhongMaterialSampling, SampleWeightsAverageToTheIntegralOfEvaluate)
     double squares = 0.0;
     double count = 0.0;
     for (int draw = 0; draw < kDraws; ++draw)
-        for (const glm::vec4& weight : sampler.sampleWeights(
-                 samplingCase, kSampleSide, kSampleSide, 2000 + static_cast<std::uint64_t>(draw))) {
+        for (const glm::vec4& weight :
+             sampler.sampleWeights(samplingCase, kSampleSide, kSampleSide,
+                                   2000 + static_cast<std::uint64_t>(draw),
+                                   SamplerChoice{true, false, draw, 4})) {
             const double value = (weight.x + weight.y + weight.z) / 3.0;
             sum += value;
             squares += value * value;

@@ -4,7 +4,6 @@
 #include "gl/GlError.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
-#include "render/AccumulationTargets.h"
 #include "render/PathTracerProgram.h"
 #include "render/ShaderSource.h"
 #include "support/TestPaths.h"
@@ -28,7 +27,7 @@ render::ShaderSource probeSource()
                "#define PIGMENT_ARRAY_SIZE 1\n#define FINISH_ARRAY_SIZE 1\n"
                "#define LIGHT_ARRAY_SIZE 1\n");
     for (const char* module :
-         {"constants.glsl", "rng.glsl", "sampling.glsl", "scene_data.glsl", "fresnel.glsl",
+         {"constants.glsl", "rng.glsl", "sampler.glsl", "sampling.glsl", "scene_data.glsl", "fresnel.glsl",
           "materials.glsl"})
         source.addFile(shaders / "modules" / module, shaders);
     source.addFile(testing_support::testsDirectory() / "sampling" / "sampling_probe.frag",
@@ -51,26 +50,23 @@ ShaderSampler::ShaderSampler() : program_(compileProbe()) {}
 
 std::vector<glm::vec4> ShaderSampler::draw(int mode, const SamplingCase& samplingCase,
                                            int width, int height, std::uint64_t seed,
-                                           const GridLayout& grid) const
+                                           const GridLayout& grid,
+                                           const SamplerChoice& choice) const
 {
-    std::vector<std::uint32_t> seeds;
-    seeds.reserve(static_cast<std::size_t>(width) * height * 4);
-    for (std::uint64_t pixel = 0; pixel < static_cast<std::uint64_t>(width) * height; ++pixel)
-        for (std::uint32_t word : render::initialRandomState(seed, pixel))
-            seeds.push_back(word);
-    const gl::Texture seedTexture = gl::createTexture2D(GL_RGBA32UI, width, height,
-                                                        GL_RGBA_INTEGER, GL_UNSIGNED_INT,
-                                                        seeds.data());
     const gl::Texture target =
         gl::createTexture2D(GL_RGBA32F, width, height, GL_RGBA, GL_FLOAT, nullptr);
     const gl::Framebuffer framebuffer({&target});
     const gl::VertexArray triangle;
 
     program_.use();
-    seedTexture.bind(0);
     auto location = [&](const char* name) { return program_.uniformLocation(name); };
-    glUniform1i(location("uSeeds"), 0);
     glUniform1i(location("uMode"), mode);
+    glUniform1i(location("uSampler"), choice.sobol ? 1 : 0);
+    glUniform2ui(location("uSeed"), static_cast<GLuint>(seed), static_cast<GLuint>(seed >> 32));
+    glUniform1i(location("uSequence"), choice.onePixelSequence ? 1 : 0);
+    glUniform1i(location("uSampleIndex"), choice.sampleIndex);
+    glUniform1i(location("uDimension"), choice.dimension);
+    glUniform1f(location("uImageWidth"), static_cast<float>(width));
     glUniform1i(location("uRoutine"), static_cast<int>(samplingCase.routine));
     glUniform1f(location("uExponent"), samplingCase.exponent);
     glUniform1f(location("uOneMinusCosThetaMax"), samplingCase.oneMinusCosThetaMax);
@@ -97,23 +93,45 @@ std::vector<glm::vec4> ShaderSampler::draw(int mode, const SamplingCase& samplin
 }
 
 std::vector<glm::vec4> ShaderSampler::sampleDirections(const SamplingCase& samplingCase,
-                                                       int width, int height,
-                                                       std::uint64_t seed) const
+                                                       int width, int height, std::uint64_t seed,
+                                                       const SamplerChoice& choice) const
 {
-    return draw(0, samplingCase, width, height, seed, GridLayout{});
+    return draw(0, samplingCase, width, height, seed, GridLayout{}, choice);
 }
 
 std::vector<glm::vec4> ShaderSampler::sampleWeights(const SamplingCase& samplingCase, int width,
-                                                    int height, std::uint64_t seed) const
+                                                    int height, std::uint64_t seed,
+                                                    const SamplerChoice& choice) const
 {
-    return draw(2, samplingCase, width, height, seed, GridLayout{});
+    return draw(2, samplingCase, width, height, seed, GridLayout{}, choice);
+}
+
+std::vector<glm::vec3> ShaderSampler::samplerNumbers(int width, int height, std::uint64_t seed,
+                                                     const SamplerChoice& choice) const
+{
+    const std::vector<glm::vec4> values =
+        draw(4, SamplingCase{}, width, height, seed, GridLayout{}, choice);
+    std::vector<glm::vec3> numbers(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i)
+        numbers[i] = glm::vec3(values[i]);
+    return numbers;
+}
+
+std::vector<glm::vec2> ShaderSampler::unscrambledSobol(int count) const
+{
+    const std::vector<glm::vec4> values =
+        draw(5, SamplingCase{}, count, 1, 0, GridLayout{}, SamplerChoice{});
+    std::vector<glm::vec2> points(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i)
+        points[i] = glm::vec2(values[i]);
+    return points;
 }
 
 std::vector<float> ShaderSampler::pdfOnGrid(const SamplingCase& samplingCase,
                                             const GridLayout& grid) const
 {
     const std::vector<glm::vec4> values =
-        draw(1, samplingCase, grid.thetaCells, grid.phiCells, 0, grid);
+        draw(1, samplingCase, grid.thetaCells, grid.phiCells, 0, grid, SamplerChoice{});
     std::vector<float> pdf(values.size());
     for (std::size_t i = 0; i < values.size(); ++i)
         pdf[i] = values[i].w;
@@ -124,7 +142,7 @@ std::vector<glm::vec3> ShaderSampler::reflectanceOnGrid(const SamplingCase& samp
                                                         const GridLayout& grid) const
 {
     const std::vector<glm::vec4> values =
-        draw(3, samplingCase, grid.thetaCells, grid.phiCells, 0, grid);
+        draw(3, samplingCase, grid.thetaCells, grid.phiCells, 0, grid, SamplerChoice{});
     std::vector<glm::vec3> reflectance(values.size());
     for (std::size_t i = 0; i < values.size(); ++i)
         reflectance[i] = glm::vec3(values[i]);

@@ -30,6 +30,18 @@ struct SamplingCase {
 
 // The directions of a pdf grid: cell (i, j) is centred on theta = (i + 1/2) thetaMax /
 // thetaCells, phi = (j + 1/2) 2 pi / phiCells in `frame` (columns: tangent, bitangent, axis).
+// Where the probe's numbers come from: the renderer's sampler (shaders/modules/sampler.glsl).
+struct SamplerChoice {
+    bool sobol = true;  // false: the independent random stream
+    // false: every fragment is a pixel of its own at sample index `sampleIndex`, so
+    // fragments are independent draws; true: the fragments are consecutive samples of one
+    // pixel (row-major), from `sampleIndex` on.
+    bool onePixelSequence = false;
+    int sampleIndex = 0;
+    // The sampler dimension the 2D numbers come from (the 1D lobe choice takes the next).
+    int dimension = 4;
+};
+
 struct GridLayout {
     int thetaCells = 512;
     int phiCells = 512;
@@ -41,15 +53,26 @@ class ShaderSampler {
 public:
     ShaderSampler();
 
-    // width x height samples, one per fragment, each fragment's generator seeded as the
-    // renderer seeds its pixels (render::initialRandomState). x, y, z: the direction; w: its
-    // pdf, or -1 where the routine returned no sample.
+    // width x height samples, one per fragment, its numbers drawn by the renderer's sampler
+    // for `seed` as `choice` says. x, y, z: the direction; w: its pdf, or -1 where the
+    // routine returned no sample.
     std::vector<glm::vec4> sampleDirections(const SamplingCase& samplingCase, int width,
-                                            int height, std::uint64_t seed) const;
+                                            int height, std::uint64_t seed,
+                                            const SamplerChoice& choice = {}) const;
 
     // The material's sample weights f cos / pdf (xyz; w = 1, or all zero for no sample).
     std::vector<glm::vec4> sampleWeights(const SamplingCase& samplingCase, int width, int height,
-                                         std::uint64_t seed) const;
+                                         std::uint64_t seed,
+                                         const SamplerChoice& choice = {}) const;
+
+    // The sampler's own numbers, one fragment each: x, y = sample2D(choice.dimension),
+    // z = sample1D(choice.dimension).
+    std::vector<glm::vec3> samplerNumbers(int width, int height, std::uint64_t seed,
+                                          const SamplerChoice& choice) const;
+
+    // Sobol's first two dimensions, unscrambled, of the points 0 .. count - 1, as the
+    // sampler computes them (24-bit fractions).
+    std::vector<glm::vec2> unscrambledSobol(int count) const;
 
     // The pdf at every grid cell centre, theta-major: index = j * thetaCells + i.
     std::vector<float> pdfOnGrid(const SamplingCase& samplingCase, const GridLayout& grid) const;
@@ -60,7 +83,8 @@ public:
 
 private:
     std::vector<glm::vec4> draw(int mode, const SamplingCase& samplingCase, int width,
-                                int height, std::uint64_t seed, const GridLayout& grid) const;
+                                int height, std::uint64_t seed, const GridLayout& grid,
+                                const SamplerChoice& choice) const;
 
     gl::Program program_;
 };

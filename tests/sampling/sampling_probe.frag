@@ -1,19 +1,28 @@
-// The test's own main(), appended to the renderer's modules (constants, rng, sampling,
-// scene_data, fresnel, materials): it runs the real sampling and pdf routines, one per
-// fragment, and writes what they returned into an RGBA32F target read back by the test.
+// The test's own main(), appended to the renderer's modules (constants, rng, sampler,
+// sampling, scene_data, fresnel, materials): it runs the real sampling and pdf routines, one
+// per fragment, and writes what they returned into an RGBA32F target read back by the test.
 //
 //   uMode 0: draw one sample per fragment; rgb = the direction, a = its pdf (-1: no sample)
 //   uMode 1: evaluate the pdf at the centre of grid cell (theta, phi) = fragment (x, y);
 //            rgb = the direction, a = the pdf
 //   uMode 2: draw one sample per fragment; rgb = its weight f cos / pdf, a = 1 if valid
 //   uMode 3: evaluate f cos at the centre of grid cell (theta, phi); rgb = f cos
+//   uMode 4: the sampler's own numbers: rg = sample2D(uDimension), b = sample1D(uDimension)
+//   uMode 5: rg = Sobol's first two dimensions of point number fragment.x, unscrambled
+//
+// The numbers come from the renderer's sampler (uSampler, uSeed), as a path's do. Under
+// uSequence 0 every fragment is a pixel of its own, taking its sample number uSampleIndex
+// (so fragments are independent draws); under uSequence 1 the fragments are consecutive
+// samples of one pixel, sample index = uSampleIndex + the fragment's row-major number.
 //
 // Routines (uRoutine): 0 cosine hemisphere, 1 uniform cone, 2 Blinn-Phong half vector (all
 // in the local frame, +z up), 3 the Blinn-Phong material (world directions).
 
 uniform int uMode;
 uniform int uRoutine;
-uniform usampler2D uSeeds;
+uniform int uSequence;
+uniform int uSampleIndex;
+uniform int uDimension;
 uniform float uExponent;
 uniform float uOneMinusCosThetaMax;
 uniform vec3 uNormal;
@@ -22,6 +31,7 @@ uniform vec3 uPigment;
 uniform mat3 uGridFrame;   // local (theta, phi) directions to world
 uniform vec2 uGridCells;   // theta cells, phi cells
 uniform float uGridThetaMax;
+uniform float uImageWidth;
 
 layout(location = 0) out vec4 outValue;
 
@@ -75,23 +85,37 @@ void main()
         return;
     }
 
-    rngState = texelFetch(uSeeds, fragment, 0);
+    if (uSequence == 0)
+        beginSample(fragment, uint(uSampleIndex));
+    else
+        beginSample(ivec2(0), uint(uSampleIndex + fragment.y * int(uImageWidth) + fragment.x));
+    if (uMode == 5) {
+        uvec2 point = sobol2D(uint(fragment.x));
+        outValue = vec4(unitFloatFromWord(point.x), unitFloatFromWord(point.y), 0.0, 1.0);
+        return;
+    }
+    if (uMode == 4) {
+        outValue = vec4(sample2D(uDimension), sample1D(uDimension), 1.0);
+        return;
+    }
+    float uLobe = sample1D(uDimension + 1);
+    vec2 u = sample2D(uDimension);
     if (uMode == 2) {
-        BsdfSample scattered = blinnPhongSample(probeSurface(), uOutgoing);
+        BsdfSample scattered = blinnPhongSample(probeSurface(), uOutgoing, uLobe, u);
         outValue = scattered.valid ? vec4(scattered.weight, 1.0) : vec4(0.0);
         return;
     }
     if (uRoutine == 0) {
-        vec3 direction = sampleCosineHemisphere(random2());
+        vec3 direction = sampleCosineHemisphere(u);
         outValue = vec4(direction, cosineHemispherePdf(direction.z));
     } else if (uRoutine == 1) {
-        vec3 direction = sampleUniformCone(random2(), uOneMinusCosThetaMax);
+        vec3 direction = sampleUniformCone(u, uOneMinusCosThetaMax);
         outValue = vec4(direction, uniformConePdf(uOneMinusCosThetaMax));
     } else if (uRoutine == 2) {
-        vec3 direction = sampleBlinnPhongHalfVector(random2(), uExponent);
+        vec3 direction = sampleBlinnPhongHalfVector(u, uExponent);
         outValue = vec4(direction, blinnPhongHalfVectorPdf(direction.z, uExponent));
     } else {
-        BsdfSample scattered = blinnPhongSample(probeSurface(), uOutgoing);
+        BsdfSample scattered = blinnPhongSample(probeSurface(), uOutgoing, uLobe, u);
         outValue = scattered.valid ? vec4(scattered.direction, scattered.pdf)
                                    : vec4(0.0, 0.0, 0.0, -1.0);
     }

@@ -37,6 +37,7 @@ RenderedImage renderScene(const scene::Scene& scene, int width, int height, int 
     while (renderer.samplesPerPixel() < samplesPerPixel)
         renderer.renderFrame({}, std::min(kSamplesPerDraw,
                                           samplesPerPixel - renderer.samplesPerPixel()));
+    renderer.completeSamples();
     RenderedImage image;
     image.radiance = renderer.radiance();
     image.statistics = renderer.sampleStatistics();

@@ -1,0 +1,201 @@
+// Exact ray intersections of the shapes that have one in closed form: every render meets
+// polyhedra and sphere lights through them (ray_queries_traced.glsl), and --exact-geometry
+// every shape it can (ray_queries_exact.glsl). Each exact* function takes a ray (unit
+// direction), the interval (tMin, hit.t) in which a crossing counts, and replaces `hit` by
+// the shape's first crossing in it, returning true when it did. Normals are the solid's
+// outward unit normals; a disk, which has no inside, faces the ray.
+
+struct ExactHit {
+    float t;
+    int object;
+    vec3 normal;
+};
+
+// The first t beyond tMin at which the ray (unit direction) crosses the sphere's surface, or
+// FLOAT_MAX. The chord's half-length comes from the ray's distance to the centre measured
+// perpendicularly (not |oc|^2 - b^2, which cancels for far spheres).
+float raySphereCrossing(vec3 origin, vec3 direction, vec3 center, float radius, float tMin)
+{
+    vec3 fromCenter = origin - center;
+    float b = dot(fromCenter, direction);
+    vec3 offAxis = fromCenter - b * direction;
+    float halfChordSquared = radius * radius - dot(offAxis, offAxis);
+    if (halfChordSquared < 0.0)
+        return FLOAT_MAX;
+    float halfChord = sqrt(halfChordSquared);
+    if (-b - halfChord > tMin)
+        return -b - halfChord;
+    return -b + halfChord > tMin ? -b + halfChord : FLOAT_MAX;
+}
+
+// Sphere (centre, radius) = vec4.
+bool exactSphere(vec3 origin, vec3 direction, vec4 sphere, float tMin, int object,
+                 inout ExactHit hit)
+{
+    float t = raySphereCrossing(origin, direction, sphere.xyz, sphere.w, tMin);
+    if (!(t < hit.t))
+        return false;
+    hit = ExactHit(t, object, (origin + t * direction - sphere.xyz) / sphere.w);
+    return true;
+}
+
+// The interval of a ray inside a convex region, and the region's outward unit normals on
+// the faces the ray enters and leaves it by.
+struct ConvexInterval {
+    float enter;
+    float exit;
+    vec3 enterNormal;
+    vec3 exitNormal;
+};
+
+ConvexInterval wholeRay()
+{
+    return ConvexInterval(-FLOAT_MAX, FLOAT_MAX, vec3(0.0), vec3(0.0));
+}
+
+// Clips the interval by the open half-space dot(n, x) + w < 0 of plane (n, w), unit n.
+void clipByHalfSpace(inout ConvexInterval interval, vec3 origin, vec3 direction, vec4 plane)
+{
+    float height = dot(plane.xyz, origin) + plane.w;
+    float rate = dot(plane.xyz, direction);
+    if (rate > 0.0) {
+        float t = -height / rate;
+        if (t < interval.exit) {
+            interval.exit = t;
+            interval.exitNormal = plane.xyz;
+        }
+    } else if (rate < 0.0) {
+        float t = -height / rate;
+        if (t > interval.enter) {
+            interval.enter = t;
+            interval.enterNormal = plane.xyz;
+        }
+    } else if (height >= 0.0) {
+        interval.enter = FLOAT_MAX;  // parallel, and outside: never inside
+    }
+}
+
+// The first crossing of a convex solid's boundary: entering it (outward normal against the
+// ray) or, from inside, leaving it.
+bool exactConvexSolid(ConvexInterval interval, float tMin, int object, inout ExactHit hit)
+{
+    if (!(interval.enter < interval.exit))
+        return false;
+    if (interval.enter > tMin) {
+        if (!(interval.enter < hit.t))
+            return false;
+        hit = ExactHit(interval.enter, object, interval.enterNormal);
+        return true;
+    }
+    if (interval.exit > tMin && interval.exit < hit.t && interval.exit < FLOAT_MAX) {
+        hit = ExactHit(interval.exit, object, interval.exitNormal);
+        return true;
+    }
+    return false;
+}
+
+// The scene format's polyhedron is the union of solid half-spaces, the complement of the
+// convex region where every plane's distance is positive (a room's inside): its surface is
+// crossed where a ray leaves that region (into the solid, outward normal n, against the
+// ray) or enters it (out of the solid, outward normal n, along the ray). The region is
+// clipped plane by plane with clipOutsideHalfSpace.
+void clipOutsideHalfSpace(inout ConvexInterval interval, vec3 origin, vec3 direction,
+                          vec4 plane)
+{
+    clipByHalfSpace(interval, origin, direction, -plane);
+}
+
+bool exactHalfSpaceUnion(ConvexInterval outside, float tMin, int object, inout ExactHit hit)
+{
+    // The normals clipByHalfSpace recorded point out of the region, into the solid: the
+    // solid's outward normal is their opposite.
+    outside.enterNormal = -outside.enterNormal;
+    outside.exitNormal = -outside.exitNormal;
+    return exactConvexSolid(outside, tMin, object, hit);
+}
+
+// A slab |x_axis - centre| < halfWidth along one axis of the shape's frame.
+void clipBySlab(inout ConvexInterval interval, float origin, float direction, float halfWidth,
+                vec3 axis)
+{
+    if (direction == 0.0) {
+        if (abs(origin) >= halfWidth)
+            interval.enter = FLOAT_MAX;
+        return;
+    }
+    float near = (-sign(direction) * halfWidth - origin) / direction;
+    float far = (sign(direction) * halfWidth - origin) / direction;
+    if (near > interval.enter) {
+        interval.enter = near;
+        interval.enterNormal = -sign(direction) * axis;
+    }
+    if (far < interval.exit) {
+        interval.exit = far;
+        interval.exitNormal = sign(direction) * axis;
+    }
+}
+
+// Axis-aligned box (centre, half extents) in the frame of `origin` and `direction`.
+bool exactBox(vec3 origin, vec3 direction, vec3 center, vec3 halfExtents, float tMin,
+              int object, inout ExactHit hit)
+{
+    vec3 q = origin - center;
+    ConvexInterval interval = wholeRay();
+    clipBySlab(interval, q.x, direction.x, halfExtents.x, vec3(1.0, 0.0, 0.0));
+    clipBySlab(interval, q.y, direction.y, halfExtents.y, vec3(0.0, 1.0, 0.0));
+    clipBySlab(interval, q.z, direction.z, halfExtents.z, vec3(0.0, 0.0, 1.0));
+    return exactConvexSolid(interval, tMin, object, hit);
+}
+
+// Capped cylinder around y (centre, radius, half-height): the slab |y| < h and the infinite
+// cylinder x^2 + z^2 < r^2, whose chord is found as the sphere's is, in the xz plane.
+bool exactCappedCylinder(vec3 origin, vec3 direction, vec3 center, float radius,
+                         float halfHeight, float tMin, int object, inout ExactHit hit)
+{
+    vec3 q = origin - center;
+    ConvexInterval interval = wholeRay();
+    clipBySlab(interval, q.y, direction.y, halfHeight, vec3(0.0, 1.0, 0.0));
+    float planar = dot(direction.xz, direction.xz);
+    if (planar > 0.0) {
+        float along = dot(q.xz, direction.xz) / planar;
+        vec2 offAxis = q.xz - along * direction.xz;
+        float halfChordSquared = (radius * radius - dot(offAxis, offAxis)) / planar;
+        if (halfChordSquared < 0.0)
+            return false;
+        float halfChord = sqrt(halfChordSquared);
+        float near = -along - halfChord;
+        float far = -along + halfChord;
+        if (near > interval.enter) {
+            interval.enter = near;
+            vec2 radial = (q.xz + near * direction.xz) / radius;
+            interval.enterNormal = vec3(radial.x, 0.0, radial.y);
+        }
+        if (far < interval.exit) {
+            interval.exit = far;
+            vec2 radial = (q.xz + far * direction.xz) / radius;
+            interval.exitNormal = vec3(radial.x, 0.0, radial.y);
+        }
+    } else if (dot(q.xz, q.xz) >= radius * radius) {
+        return false;
+    }
+    return exactConvexSolid(interval, tMin, object, hit);
+}
+
+// Disk (centre, radius) = vec4 with unit normal n: the ray's crossing of its plane, if it is
+// within the radius. It faces the ray.
+bool exactDisk(vec3 origin, vec3 direction, vec4 disk, vec3 normal, float tMin, int object,
+               inout ExactHit hit)
+{
+    float rate = dot(normal, direction);
+    if (rate == 0.0)
+        return false;
+    float t = dot(disk.xyz - origin, normal) / rate;
+    if (!(t > tMin && t < hit.t))
+        return false;
+    vec3 fromCenter = origin + t * direction - disk.xyz;
+    vec3 inPlane = fromCenter - dot(fromCenter, normal) * normal;
+    if (dot(inPlane, inPlane) > disk.w * disk.w)
+        return false;
+    hit = ExactHit(t, object, rate < 0.0 ? normal : -normal);
+    return true;
+}

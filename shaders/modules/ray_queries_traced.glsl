@@ -1,0 +1,320 @@
+// The geometry's answers (ray_queries.glsl) by sphere tracing the scene's distance functions
+// (sphere_tracing.glsl): surfaces are found within the hit tolerance of the ray's cone,
+// rays leave surfaces offset by a few tolerances, and shadow rays march to their light.
+
+// A march stops within the hit tolerance of a surface; a ray that stops there has met the
+// surface only if it truly crosses it: the stop is moved along the ray onto the surface
+// (intersectAlongRay), and where that does not converge the ray is passing a silhouette, an
+// edge or the rim of a contact within the tolerance without meeting it. Such a near miss is
+// not a hit: the march goes on past it, accepting surfaces only within a quarter of the
+// tolerance, and so on up to kNearMissRetries times (1/64 of the tolerance), after which the
+// closest approach is taken (its pixel's cone overlaps the surface anyway). Treating near
+// misses as hits dilates every silhouette and occluder by the tolerance: a band of
+// mis-shaded pixels around each object and each contact, which no sample count removes
+// (docs/ACCURACY.md measures it against exact intersection).
+const int kNearMissRetries = 3;
+const float kNearMissToleranceScale = 0.25;
+
+// Normals at points that are on the surface take their differences this fraction of the
+// tolerance apart: near an edge (a box's rim, two objects that touch) the taps of a wider
+// stencil reach the other surface and tilt the normal. Off the surface (an accepted near
+// miss) the stencil must span the tolerance.
+const float kOnSurfaceNormalStep = 0.25;
+
+#if HAS_SPHERE_LIGHTS
+// The nearest sphere light that rays leave out of their marches (ray_queries.glsl) which
+// the ray crosses beyond `start`, and where; -1 for none. Sphere lights are met exactly, so
+// a ray passing the rim of a light within the tolerance sees what lies behind it (marched,
+// it would stop at the light without meeting it and see neither).
+int nearestExcludedSphereLight(vec3 origin, vec3 direction, float start, out float t)
+{
+    int nearest = -1;
+    t = FLOAT_MAX;
+    for (int light = 0; light < LIGHT_COUNT && loopIterationAllowed(); ++light) {
+        if (isPointLight(light) || lightCullingBit(light) == 0u)
+            continue;
+        float crossing =
+            raySphereCrossing(origin, direction, lightPosition(light), lightRadius(light), start);
+        if (crossing < t) {
+            t = crossing;
+            nearest = light;
+        }
+    }
+    return nearest;
+}
+#endif
+
+// The first surface along the ray. What the pixel sees is where its ray meets the surface:
+// stops are moved along the ray onto it (see intersectAlongRay; without it a lit plane comes
+// out about 1 % too bright, a floor seen at grazing angles shows its pattern displaced
+// towards the camera, and a convex mirror, whose reflected directions follow the point,
+// reflects the wrong part of the room near its rim), and the object is the one whose
+// surface the point is on. Where that does not converge even after the near-miss retries,
+// the point is projected along the normal, which lands on the surface within the tolerance,
+// safely. The normal is taken at the final point: decisions such as which side the ray came
+// from are ill-conditioned at grazing incidence and must match it.
+SurfaceHit findSurface(vec3 origin, vec3 direction, float insideSign, RayCone cone,
+                       float start, int containing)
+{
+    RayCulling culling = rayCulling(origin, direction, cone);
+    // Polyhedra are met exactly (the culled distances the march evaluates leave them out):
+    // the march ends where the ray crosses one. A ray inside another solid can only leave it.
+    // `start` only says where marched objects may begin (the camera's cone march leaves
+    // polyhedra out too): a polyhedron may be crossed before it.
+    // Planes are met however far away (the far distance only bounds what is marched): a
+    // floor reaches the horizon.
+    ExactHit walls = ExactHit(FLOAT_MAX, -1, vec3(0.0));
+    exactPolyhedraIntersect(origin, direction, 0.0, walls);
+    if (containing >= 0 && walls.object != containing)
+        walls = ExactHit(FLOAT_MAX, -1, vec3(0.0));
+    float end = min(uFarDistance, walls.t);
+#if HAS_SPHERE_LIGHTS
+    int light = -1;
+    float lightT = FLOAT_MAX;
+    if (insideSign > 0.0) {
+        culling.mask &= ~uSphereLightPieces;
+        light = nearestExcludedSphereLight(origin, direction, start, lightT);
+        end = min(end, lightT);
+    }
+#endif
+    int stepsLeft = start < end ? uMaxMarchSteps : 0;
+    float toleranceScale = 1.0;
+    float from = start;
+    MarchHit hit = MarchHit(false, 0.0, 0.0, -1, 0.0, 0.0, false);
+    vec3 p;
+    bool onSurface = false;
+    for (int attempt = 0; attempt <= kNearMissRetries; ++attempt) {
+        hit = sphereTrace(origin, direction, insideSign, cone, toleranceScale, culling, from,
+                          end, stepsLeft);
+        if (!hit.found)
+            break;
+        p = origin + hit.t * direction;
+        onSurface = intersectAlongRay(p, direction, hit.sceneDistance, insideSign, hit.approach,
+                                      hit.tolerance, culling.mask);
+        if (onSurface || hit.budgetSpent)
+            break;
+        from = hit.t;
+        toleranceScale *= kNearMissToleranceScale;
+    }
+    SurfaceHit surface;
+    if (!hit.found) {
+        // Nothing marched before the nearest exact crossing, if any.
+#if HAS_SPHERE_LIGHTS
+        if (light >= 0 && lightT < walls.t)
+            walls = ExactHit(lightT, lightObject(light),
+                             normalize(origin + lightT * direction - lightPosition(light)));
+#endif
+        if (walls.object < 0)
+            return noSurfaceHit();
+        surface.found = true;
+        surface.object = walls.object;
+        surface.t = walls.t;
+        surface.position = origin + walls.t * direction;
+        surface.normal = walls.normal;
+        surface.footprint = coneFootprint(cone, walls.t);
+        surface.tolerance = hitTolerance(cone, walls.t);
+        return surface;
+    }
+    surface.found = true;
+    surface.t = hit.t;
+    surface.footprint = coneFootprint(cone, hit.t);
+    surface.tolerance = hitTolerance(cone, hit.t);
+    int object = hit.object;
+    vec3 normal;
+    if (onSurface) {
+        // Where two objects come within the tolerance of each other (a contact), the march's
+        // nearest object at the stop may be the other one. (Only marched objects: the march
+        // met none of the polyhedra, which rays meet exactly.)
+        sceneDistanceAndObjectCulled(p, 0xffffffffu, object);
+        normal = sceneNormal(p, kOnSurfaceNormalStep * surface.tolerance, insideSign);
+    } else {
+        normal = sceneNormal(p, surface.tolerance, insideSign);
+    }
+    if (normal == vec3(0.0))
+        normal = -direction;
+    if (!onSurface)
+        p -= normal * hit.sceneDistance;
+    surface.object = containing >= 0 ? containing : object;
+    surface.position = p;
+    surface.normal = normal;
+    return surface;
+}
+
+// Starts the next ray at surface point p, off the surface by twice the hit tolerance (so
+// its march does not find p again), on the side `direction` leaves to, and updates
+// `insideSign` for it. The offset is taken along the new direction, not along the normal:
+// then the ray's line still passes through p, and a chain of specular bounces keeps its
+// geometry (a normal offset shifts each reflected line by the offset, and light trapped
+// by total internal reflection in a sphere drifts out after a few bounces). At grazing
+// directions, where that would go far along the surface, part of the offset is along the
+// normal instead.
+// `facingNormal` points to the side the ray arrived from (Surface.facingNormal, which the
+// BSDFs sampled against): a direction on that side stays in the region the ray travelled
+// in, one on the other side crosses into the other region. The offset point can land
+// beyond another surface, in a solid the ray never entered: near an edge or a corner (an
+// offset from a room's wall, out through the next wall, would then see the sky), or along a
+// grazing direction inside a concave surface. Then the offset is retried along the normal,
+// once, and twice as far; failing that the path ends there.
+// `containing` receives the object the new ray starts inside (-1 outside every object);
+// its march starts at its origin.
+const float kMinimumSpawnCosine = 0.0625;
+const int kMaxShadowCrossings = 32;
+
+bool spawn(vec3 p, vec3 facingNormal, vec3 direction, float tolerance, int object,
+           inout float insideSign, out vec3 origin, out float start, out int containing)
+{
+    start = 0.0;
+    const float kMinimumCosine = kMinimumSpawnCosine;
+    float cosLeaving = dot(direction, facingNormal);
+    bool crosses = cosLeaving < 0.0;
+    float side = crosses ? -1.0 : 1.0;
+    float expectedSign = crosses ? -insideSign : insideSign;
+    float clearance = 2.0 * tolerance;
+    float along = clearance / max(abs(cosLeaving), kMinimumCosine);
+    float normalPart = max(0.0, clearance - along * abs(cosLeaving));
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        if (attempt == 0)
+            origin = p + direction * along + facingNormal * (side * normalPart);
+        else
+            origin = p + facingNormal * (side * float(attempt) * clearance);
+        if (expectedSign * sceneDistanceAndObject(origin, containing) > 0.0) {
+            insideSign = expectedSign;
+            if (insideSign > 0.0)
+                containing = -1;
+            return true;
+        }
+    }
+    return false;
+}
+
+// Marches from off the surface, on the side the path arrived from, to the far end. Sphere
+// lights that rays leave out of their marches block the segment where it crosses them
+// exactly; when the segment ends on a light that is still marched, arriving within the
+// tolerance of it counts as reaching it. (Marching on to the target's surface itself would
+// crawl for ever on rays that meet it at grazing angles, and be taken for occlusion.) A stop
+// near another surface blocks the light only if the ray truly meets it, as findSurface
+// decides for its hits: a shadow ray grazing a silhouette or slipping past the rim of a
+// contact within the tolerance goes on, with a smaller one. A spent step budget counts as
+// blocked, as a spent budget counts as a hit for camera and path rays.
+vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, float tolerance,
+                         int target)
+{
+    // Off the surface along wi, as spawn offsets rays: the segment's line still passes
+    // through the shading point, so what it sees of the light is what the point sees (an
+    // offset along the normal raises the point, and shadows near contacts and edges shift
+    // by it). Only at grazing directions is part of the offset along the normal.
+    float clearance = 2.0 * tolerance;
+    float cosLeaving = dot(wi, s.facingNormal);
+    float along = clearance / max(cosLeaving, kMinimumSpawnCosine);
+    float normalPart = max(0.0, clearance - along * cosLeaving);
+    if (target < 0 && distance <= along)
+        return vec3(0.0);
+    vec3 origin = s.position + wi * along + s.facingNormal * normalPart;
+    float maxDistance = distance - along;
+    vec3 transmittance = vec3(1.0);
+    RayCulling culling = sceneRayCulling(origin, wi, tolerance, 0.0);
+    // Polyhedra, which marches leave out, block where the segment crosses one; index-1
+    // ones only tint, and are passed one crossing after another.
+    float from = 0.0;
+    for (int crossing = 0; crossing < kMaxShadowCrossings && loopIterationAllowed();
+         ++crossing) {
+        ExactHit wall = ExactHit(maxDistance, -1, vec3(0.0));
+        exactPolyhedraIntersect(origin, wi, from, wall);
+        if (wall.object < 0 || wall.object == target)
+            break;
+        if (!isNullInterface(wall.object))
+            return vec3(0.0);
+        transmittance *= pigmentColor(objectPigment(wall.object), origin + wall.t * wi, -wi,
+                                      0.0, tolerance);
+        from = wall.t + tolerance;
+    }
+#if HAS_SPHERE_LIGHTS
+    if (insideSign > 0.0) {
+        culling.mask &= ~uSphereLightPieces;
+        for (int light = 0; light < LIGHT_COUNT && loopIterationAllowed(); ++light)
+            if (!isPointLight(light) && lightCullingBit(light) != 0u &&
+                lightObject(light) != target &&
+                raySphereCrossing(origin, wi, lightPosition(light), lightRadius(light), 0.0) <
+                    maxDistance)
+                return vec3(0.0);
+    }
+#endif
+    float clearDistance = min(maxDistance, culling.escapeDistance);
+    float stopTolerance = tolerance;
+    int retries = 0;
+    float t = 0.0;
+    float acceptedT = 0.0;
+    float acceptedRadius = 0.0;
+    for (int step = 0; step < uMaxMarchSteps && loopIterationAllowed(); ++step) {
+        if (t >= clearDistance)
+            return transmittance;
+        vec3 p = origin + t * wi;
+        float radius = insideSign * sceneDistanceCulled(p, culling.mask);
+        if (radius < stopTolerance) {
+#if HAS_NULL_INTERFACES || HAS_SPHERE_LIGHTS
+            int nearest;
+            sceneDistanceAndObjectCulled(p, culling.mask, nearest);
+            if (nearest == target)
+                return transmittance;
+#endif
+#if HAS_NULL_INTERFACES
+            if (nearest >= 0 && isNullInterface(nearest)) {
+                transmittance *= pigmentColor(objectPigment(nearest), p, -wi, 0.0, tolerance);
+                // Step through the surface; where the step only grazed it, the march goes
+                // on from outside and crosses further along.
+                t += 2.0 * tolerance;
+                insideSign = sceneDistance(origin + t * wi) < 0.0 ? -1.0 : 1.0;
+                acceptedRadius = 0.0;
+                continue;
+            }
+#endif
+            float approach =
+                acceptedRadius > 0.0 ? (acceptedRadius - radius) / (t - acceptedT) : 0.0;
+            vec3 q = p;
+            if (radius <= 0.0 || retries == kNearMissRetries ||
+                intersectAlongRay(q, wi, insideSign * radius, insideSign, approach,
+                                  stopTolerance, culling.mask))
+                return vec3(0.0);
+            ++retries;
+            stopTolerance *= kNearMissToleranceScale;
+        }
+        acceptedT = t;
+        acceptedRadius = radius;
+        t += max(radius, 0.0) * uStepScale;
+    }
+    return vec3(0.0);
+}
+
+// How far every camera ray through `pixel` travels before any surface comes within its hit
+// tolerance: the pixel's rays fill a cone around the one through its centre, and that cone
+// is marched once (cone marching, as in Amanatides, "Ray tracing with cones", 1984) so that
+// each of the pixel's paths starts its camera ray there instead of at the eye. A step from
+// t may advance by as much as leaves every point of the cone up to t + step farther from the
+// nearest surface than its tolerance: for a distance d at the cone's axis, a cone whose
+// rays stray at most `spread` per unit from the axis and tolerances growing by `growth`,
+// that is (d - tolerance0 - (spread + growth) t) / (1 + spread + growth). The same cone
+// bounds the culling (ray_culling.glsl takes the cone's spread as growth of tolerance).
+float cameraMarchStart(ivec2 pixel)
+{
+    vec3 axis = cameraRayDirection(vec2(pixel) + 0.5);
+    // Every ray through the pixel lies within half the pixel's diagonal of the axis; a pixel
+    // subtends the largest angle at the centre of the image.
+    float growth = (0.7072 + uHitTolerance) * cameraPixelSpread();
+    float tolerance0 = uMinimumHitDistance;
+    RayCulling culling = sceneRayCulling(uCameraEye, axis, tolerance0, growth);
+    float limit = min(uFarDistance, culling.escapeDistance);
+    const int kConeSteps = 64;
+    float t = 0.0;
+    for (int step = 0; step < kConeSteps && t < limit && loopIterationAllowed(); ++step) {
+        float clearance = sceneDistanceCulled(uCameraEye + t * axis, culling.mask) -
+                          tolerance0 - growth * t;
+        float advance = 0.9 * uStepScale * clearance / (1.0 + growth);
+        // Near a surface the steps shrink geometrically; the camera rays' own marches,
+        // each from here, finish the approach.
+        if (advance < tolerance0 + growth * t)
+            break;
+        t += advance;
+    }
+    return min(t, limit);
+}
+
