@@ -7,8 +7,9 @@ namespace render {
 
 enum class FresnelModel { Schlick, Exact };
 
-// Every setting that trades accuracy for time. All are uniforms except the shader variant:
-// changing one never recompiles. Defaults are the seed's choices where it made one.
+// Every setting that trades accuracy for time, and the environment switch. All are uniforms
+// except the two that shape the shader (variant, switchableEnvironment): changing one never
+// recompiles. Defaults are the seed's choices where it made one.
 struct RenderSettings {
     // A hit is accepted when the distance is below this fraction of the ray cone's width.
     // Rays passing that close to a surface count as meeting it, which dilates silhouettes
@@ -30,7 +31,13 @@ struct RenderSettings {
     // it changes the time a march takes, not what it meets.
     bool rayCulling = true;
     FresnelModel dielectricFresnel = FresnelModel::Schlick;
+    // Rays that escape see the scene's environment; off, they see black. Takes effect only
+    // in a shader that reads the environment from a uniform (switchableEnvironment).
+    bool environmentLight = true;
     ShaderVariant variant = ShaderVariant::Specialized;
+    // The shader reads the environment's kind from a uniform instead of building it in, so
+    // that environmentLight can change without a recompile (the window's panel).
+    bool switchableEnvironment = false;
     std::uint64_t seed = 1;
     // Paths per pixel in one frame (one draw); the running mean is updated after each, so
     // the result is the same as that many frames of one.
