@@ -254,13 +254,15 @@ bool InteractiveSession::reloadChangedFiles()
     const Clock::time_point start = Clock::now();
     try {
         scene::Scene edited = loadScene(line_.scene);
+        const Clock::time_point loaded = Clock::now();
         render::CameraController camera = camera_;
         camera.setHome(edited.camera, sceneRadius(edited),
                        render::cameraLinesChanged(fileScene_.camera, edited.camera));
         scene::Scene shown = edited;
         shown.camera = camera.camera();
         const render::ReloadDecision decision = renderer_.setScene(shown, changed);
-        const double seconds = secondsBetween(start, Clock::now());
+        const double readSeconds = secondsBetween(start, loaded);
+        const double uploadSeconds = secondsBetween(loaded, Clock::now());
         camera_ = camera;
         fileScene_ = std::move(edited);
         watcher_.watch(filesOfScene(line_.scene, fileScene_));
@@ -275,8 +277,10 @@ bool InteractiveSession::reloadChangedFiles()
         } else {
             std::snprintf(text, sizeof text,
                           "reloaded: values only, uniforms re-uploaded without a recompile "
-                          "(%.1f ms, reading the file included)%s",
-                          1000.0 * seconds, decision.reloadTextures ? ", textures reloaded" : "");
+                          "(reading the file %.1f ms, uploading and restarting the "
+                          "accumulation %.1f ms)%s",
+                          1000.0 * readSeconds, 1000.0 * uploadSeconds,
+                          decision.reloadTextures ? ", textures reloaded" : "");
             rebuildStart_.reset();
         }
         setStatus(text, false);
