@@ -21,4 +21,13 @@ int nextPreviewDivisor(int divisor, double lastPreviewFrameSeconds)
     return std::clamp(divisor, 1, kMaxPreviewDivisor);
 }
 
+int firstPreviewDivisor(double secondsPerFullSample)
+{
+    int divisor = 1;
+    while (divisor < kMaxPreviewDivisor &&
+           secondsPerFullSample / (static_cast<double>(divisor) * divisor) > kFirstPreviewSeconds)
+        ++divisor;
+    return divisor;
+}
+
 }  // namespace app

@@ -18,4 +18,10 @@ constexpr double kFastPreviewSeconds = 0.025;
 constexpr int kMaxPreviewDivisor = 16;
 int nextPreviewDivisor(int divisor, double lastPreviewFrameSeconds);
 
+// The divisor for the first preview, before any was timed: the smallest whose grid takes
+// at most kFirstPreviewSeconds at the cost of one full-resolution sample
+// (`secondsPerFullSample`, with every bounce: a preview's fewer bounces only make it cheaper).
+constexpr double kFirstPreviewSeconds = 0.04;
+int firstPreviewDivisor(double secondsPerFullSample);
+
 }  // namespace app

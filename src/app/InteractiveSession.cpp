@@ -129,6 +129,8 @@ bool InteractiveSession::run()
                               input.isDown(platform::MouseButton::Middle);
         const bool settling = secondsBetween(lastViewChange_, now) < kSettleSeconds;
         if (viewChanged) {
+            if (previewFrameSeconds_ == 0.0 && renderer_.lastSecondsPerSample() > 0.0)
+                previewDivisor_ = firstPreviewDivisor(renderer_.lastSecondsPerSample());
             renderer_.renderPreview(previewDivisor_, kPreviewBounces);
         } else if (renderer_.showsPreview() && (settling || dragging)) {
             // The view may go on changing: keep the preview, and do not spin.

@@ -112,6 +112,15 @@ TEST(FramePacing, ThePreviewGridCoarsensWhenSlowAndRefinesWhenFast)
     EXPECT_EQ(app::nextPreviewDivisor(app::kMaxPreviewDivisor, 5.0), app::kMaxPreviewDivisor);
 }
 
+TEST(FramePacing, TheFirstPreviewGridFollowsTheCostOfAFullSample)
+{
+    EXPECT_EQ(app::firstPreviewDivisor(0.01), 1);
+    EXPECT_EQ(app::firstPreviewDivisor(0.04), 1);
+    EXPECT_EQ(app::firstPreviewDivisor(0.15), 2) << "0.15 / 4 = 0.0375";
+    EXPECT_EQ(app::firstPreviewDivisor(0.5), 4) << "0.5 / 9 > 0.04 >= 0.5 / 16";
+    EXPECT_EQ(app::firstPreviewDivisor(1000.0), app::kMaxPreviewDivisor);
+}
+
 TEST(ConvergenceHistory, KeepsPointsOneSpacingApart)
 {
     app::ConvergenceHistory history;
