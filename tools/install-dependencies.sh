@@ -7,8 +7,9 @@ packages=(
   cmake ninja-build g++ pkg-config
   libglfw3-dev libglew-dev libglm-dev libosmesa6-dev
   libopenimageio-dev openimageio-tools
+  libimgui-dev libx11-dev
   libgtest-dev
-  xvfb xauth
+  xvfb xauth xdotool
   python3 python3-numpy
   "$@"
 )

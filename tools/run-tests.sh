@@ -8,8 +8,10 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/tools/build.sh"
 cd "$root/build"
 # ctest shows a skipped test's reason only with -V: say it here. install-dependencies.sh
-# installs xvfb, so this happens only where installing it failed.
-if ! command -v xvfb-run >/dev/null 2>&1; then
-    echo "run-tests: xvfb-run is not installed (Debian package xvfb): the window test will be reported as skipped"
+# installs xvfb and xdotool, so this happens only where installing them failed.
+if ! command -v Xvfb >/dev/null 2>&1; then
+    echo "run-tests: Xvfb is not installed (Debian package xvfb): the window tests will be reported as skipped"
+elif ! command -v xdotool >/dev/null 2>&1; then
+    echo "run-tests: xdotool is not installed (Debian package xdotool): the interactive window tests will be reported as skipped"
 fi
 ctest --output-on-failure --parallel 2 "$@"

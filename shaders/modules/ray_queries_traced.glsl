@@ -120,16 +120,18 @@ SurfaceHit findSurface(vec3 origin, vec3 direction, float insideSign, RayCone co
     surface.footprint = coneFootprint(cone, hit.t);
     surface.tolerance = hitTolerance(cone, hit.t);
     int object = hit.object;
-    vec3 normal;
+    vec3 normal = vec3(0.0);
     if (onSurface) {
         // Where two objects come within the tolerance of each other (a contact), the march's
         // nearest object at the stop may be the other one. (Only marched objects: the march
         // met none of the polyhedra, which rays meet exactly.)
         sceneDistanceAndObjectCulled(p, 0xffffffffu, object);
         normal = sceneNormal(p, kOnSurfaceNormalStep * surface.tolerance, insideSign);
-    } else {
-        normal = sceneNormal(p, surface.tolerance, insideSign);
     }
+    // Off the surface, or on one of zero thickness: at the march's stop, which lies on the
+    // side the ray came from.
+    if (normal == vec3(0.0))
+        normal = sceneNormal(origin + hit.t * direction, surface.tolerance, insideSign);
     if (normal == vec3(0.0))
         normal = -direction;
     if (!onSurface)

@@ -159,12 +159,15 @@ vec3 sceneGradient(vec3 p, float step)
 // reach there tilt the gradient. A gradient whose length is not 1 says so: it is then taken
 // again from a point backed off the surface by the taps' reach, on the side the ray came
 // from, where every tap is outside. `side` is +1 for rays outside the solid, -1 inside.
-// Zero when the gradient vanishes; the caller chooses a fallback.
+// Zero when the gradient (nearly) vanishes, as it does on a surface of zero thickness (a
+// disk, whose distance rises on both sides): the caller chooses a fallback.
 vec3 sceneNormal(vec3 p, float step, float side)
 {
     vec3 gradient = sceneGradient(p, step);
     float magnitude = length(gradient);
-    if (abs(magnitude - 1.0) > 0.01 && magnitude > 0.0)
+    if (!(magnitude > 0.5))
+        return vec3(0.0);
+    if (abs(magnitude - 1.0) > 0.01)
         gradient = sceneGradient(p + (side * 1.75 * step / magnitude) * gradient, step);
     magnitude = length(gradient);
     return magnitude > 0.0 ? gradient / magnitude : vec3(0.0);

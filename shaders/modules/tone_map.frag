@@ -1,14 +1,15 @@
-// Display pass: linear radiance to a picture, as the original did: exposure 4, John Hable's
-// filmic curve ("Uncharted 2", http://filmicgames.com/archives/75) normalised to a white
-// point of 11.2, then gamma 2.2.
+// Display pass: linear radiance to a picture, as the original did: exposure 4 (the host's
+// default for uExposure; the window's panel changes it), John Hable's filmic curve
+// ("Uncharted 2", http://filmicgames.com/archives/75) normalised to a white point of 11.2,
+// then gamma 2.2.
 
 uniform sampler2D uEstimate;
 uniform vec2 uImageSize;
 uniform vec2 uTargetSize;
+uniform float uExposure;
 
 out vec4 outColor;
 
-const float kExposure = 4.0;
 const float kWhitePoint = 11.2;
 
 vec3 hableFilmic(vec3 x)
@@ -27,6 +28,6 @@ void main()
     // Nearest image pixel for this target pixel (the window may differ in size).
     ivec2 pixel = ivec2(floor(gl_FragCoord.xy * uImageSize / uTargetSize));
     vec3 radiance = max(texelFetch(uEstimate, pixel, 0).rgb, vec3(0.0));
-    vec3 mapped = hableFilmic(kExposure * radiance) / hableFilmic(vec3(kWhitePoint));
+    vec3 mapped = hableFilmic(uExposure * radiance) / hableFilmic(vec3(kWhitePoint));
     outColor = vec4(pow(clamp(mapped, 0.0, 1.0), vec3(1.0 / 2.2)), 1.0);
 }

@@ -185,7 +185,7 @@ std::string usageText()
 
 Renders SCENE (a .in scene file) by path tracing on the GPU, WIDTH x HEIGHT pixels
 (default 640 480). Without SECONDS or --spp a window shows the image converging until it
-is closed (Escape closes it). With SECONDS the render runs that long, then writes the
+is closed (Escape closes it; its panel, Tab, lists the keys and mouse actions). With SECONDS the render runs that long, then writes the
 tone-mapped image as SCENE-NAME.ppm in the current folder (or --output). Without a display,
 or with --headless, rendering uses OSMesa and opens no window.
 

@@ -1,9 +1,13 @@
 #include "app/RenderCommand.h"
 
+#include "app/FramePacing.h"
+#include "app/InteractiveSession.h"
 #include "app/Interrupt.h"
 #include "app/Progress.h"
+#include "app/SceneLoading.h"
 #include "io/ImageFile.h"
 #include "platform/ContextFactory.h"
+#include "platform/GlfwWindowContext.h"
 #include "render/PathTracerProgram.h"
 #include "render/ProgressiveRenderer.h"
 #include "scene/FileLookup.h"
@@ -25,14 +29,6 @@ double secondsSince(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::string windowTitle(const CommandLine& line, int samples, double rate)
-{
-    char text[256];
-    std::snprintf(text, sizeof text, "raytracer - %s - %d spp, %.2f spp/s",
-                  line.scene.filename().string().c_str(), samples, rate);
-    return text;
-}
-
 void writeOutputs(const CommandLine& line, const render::ProgressiveRenderer& renderer,
                   const io::Image* windowPicture)
 {
@@ -51,18 +47,8 @@ int runRender(const CommandLine& line)
 {
     // From the start: Ctrl-C while the shader compiles must not kill the program unseen.
     InterruptWatch interrupt;
-    const scene::Scene scene = scene::parseSceneFile(line.scene);
     // Every texture must be readable before a window opens or a frame is rendered.
-    for (const scene::Pigment& pigment : scene.pigments)
-        if (pigment.kind == scene::PigmentKind::Texture) {
-            try {
-                io::checkReadableImage(pigment.texturePath);
-            } catch (const std::exception& error) {
-                throw std::runtime_error(line.scene.string() + ":" +
-                                         std::to_string(pigment.line) + ": texture '" +
-                                         pigment.textureName + "': " + error.what());
-            }
-        }
+    const scene::Scene scene = loadScene(line.scene);
     const bool writesFile = line.isBatch() || line.output.has_value();
     if (writesFile) {
         io::checkWritableFormat(line.outputPath());
@@ -82,58 +68,52 @@ int runRender(const CommandLine& line)
     request.windowTitle = "raytracer - " + line.scene.filename().string();
     const auto setupStart = std::chrono::steady_clock::now();
     auto context = platform::createContext(request);
-    render::ProgressiveRenderer renderer(scene, line.width, line.height, line.settings);
+    render::RenderSettings settings = line.settings;
+    // The window's panel switches the environment off without a recompile.
+    settings.switchableEnvironment = context->hasWindow();
+    render::ProgressiveRenderer renderer(scene, line.width, line.height, settings);
     const double setupSeconds = secondsSince(setupStart);
 
-    Progress progress(line.width, line.height, line.seconds, line.samplesPerPixel,
-                      line.isBatch() && !line.quiet);
-    const auto renderStart = std::chrono::steady_clock::now();
-    bool windowClosed = false;
-    auto timeLeft = [&] { return !line.seconds || secondsSince(renderStart) < *line.seconds; };
-    auto keepGoing = [&] {
-        if (context->hasWindow() && context->closeRequested())
-            windowClosed = true;
-        return !interrupt.requested() && !windowClosed && timeLeft();
-    };
-
-    // Several paths per pixel per frame keep SIMD lanes busy (a pixel whose path ends starts
-    // the next at once) and the per-draw overhead small; a window still wants frequent
-    // frames. Unless told, the count follows the measured cost (the first frame, which
-    // includes code generation, is not a measure).
-    const double targetFrameSeconds = context->hasWindow() && !line.isBatch() ? 0.15 : 0.5;
-    int samplesPerFrame = line.settings.samplesPerFrame;
-    auto lastTitle = std::chrono::steady_clock::now();
-    while (keepGoing()) {
-        if (line.samplesPerPixel && renderer.samplesPerPixel() >= *line.samplesPerPixel)
-            break;
-        int samples = samplesPerFrame;
-        if (line.samplesPerPixel)
-            samples = std::min(samples, *line.samplesPerPixel - renderer.samplesPerPixel());
-        if (!renderer.renderFrame(keepGoing, samples))
-            break;
-        progress.update(renderer.samplesPerPixel());
-        if (!line.samplesPerFrameGiven && renderer.frames() > 1 &&
-            renderer.lastSecondsPerSample() > 0.0)
-            samplesPerFrame = std::clamp(
-                static_cast<int>(targetFrameSeconds / renderer.lastSecondsPerSample()), 1, 16);
-        if (context->hasWindow()) {
-            const platform::DrawableSize size = context->windowFramebufferSize();
-            renderer.displayToWindow(size.width, size.height);
-            context->present();
-            if (secondsSince(lastTitle) > 0.25) {
-                const double elapsed = secondsSince(renderStart);
-                context->setTitle(windowTitle(line, renderer.samplesPerPixel(),
-                                              renderer.samplesPerPixel() / elapsed));
-                lastTitle = std::chrono::steady_clock::now();
-            }
+    bool endedEarly = false;
+    double renderSeconds = 0.0;
+    if (context->hasWindow()) {
+        InteractiveSession session(static_cast<platform::GlfwWindowContext&>(*context), renderer,
+                                   scene, line, interrupt);
+        // A window closed before the end the command line set is an interrupted render.
+        endedEarly = !session.run() && line.isBatch();
+        renderSeconds = session.renderSeconds();
+    } else {
+        Progress progress(line.width, line.height, line.seconds, line.samplesPerPixel,
+                          !line.quiet);
+        const auto renderStart = std::chrono::steady_clock::now();
+        auto keepGoing = [&] {
+            return !interrupt.requested() &&
+                   (!line.seconds || secondsSince(renderStart) < *line.seconds);
+        };
+        // Unless told, the samples per frame follow the measured cost (the first frame,
+        // which includes code generation, is not a measure).
+        int samplesPerFrame = line.settings.samplesPerFrame;
+        while (keepGoing()) {
+            if (line.samplesPerPixel && renderer.samplesPerPixel() >= *line.samplesPerPixel)
+                break;
+            int samples = samplesPerFrame;
+            if (line.samplesPerPixel)
+                samples = std::min(samples, *line.samplesPerPixel - renderer.samplesPerPixel());
+            if (!renderer.renderFrame(keepGoing, samples))
+                break;
+            progress.update(renderer.samplesPerPixel());
+            if (!line.samplesPerFrameGiven && renderer.frames() > 1)
+                samplesPerFrame = samplesPerFrameFor(0.5, renderer.lastSecondsPerSample());
         }
+        // Exactly --spp samples in every pixel, also where a frame's loop budget left one
+        // short (ProgressiveRenderer::renderFrame).
+        if (line.samplesPerPixel && renderer.samplesPerPixel() >= *line.samplesPerPixel &&
+            !interrupt.requested())
+            renderer.completeSamples();
+        renderSeconds = secondsSince(renderStart);
+        progress.finish();
     }
-    // Exactly --spp samples in every pixel, also where a frame's loop budget left one short.
-    if (line.samplesPerPixel && renderer.samplesPerPixel() >= *line.samplesPerPixel &&
-        !interrupt.requested())
-        renderer.completeSamples();
-    const double renderSeconds = secondsSince(renderStart);
-    progress.finish();
+    const bool interrupted = interrupt.requested() || endedEarly;
 
     if (writesFile) {
         io::Image windowPicture;
@@ -142,7 +122,7 @@ int runRender(const CommandLine& line)
             // The picture the window shows is the one written: draw it once more and read it
             // back before it is presented.
             const platform::DrawableSize size = context->windowFramebufferSize();
-            if (size.width == line.width && size.height == line.height) {
+            if (size.width == renderer.width() && size.height == renderer.height()) {
                 renderer.displayToWindow(size.width, size.height);
                 windowPicture = render::readWindowPixels(size.width, size.height);
                 fromWindow = true;
@@ -151,17 +131,18 @@ int runRender(const CommandLine& line)
         writeOutputs(line, renderer, fromWindow ? &windowPicture : nullptr);
     }
 
-    std::string summary = Progress::summary(line.width, line.height, renderer.samplesPerPixel(),
-                                            renderSeconds, renderer.discardedSamples());
+    std::string summary = Progress::summary(renderer.width(), renderer.height(),
+                                            renderer.samplesPerPixel(), renderSeconds,
+                                            renderer.discardedSamples());
     char setup[64];
     std::snprintf(setup, sizeof setup, " (setup %.2f s)", setupSeconds);
     summary += setup;
     if (writesFile)
         summary += " -> " + line.outputPath().string();
-    if (interrupt.requested())
+    if (interrupted)
         summary += " (interrupted)";
     std::cout << summary << std::endl;
-    return interrupt.requested() ? kExitInterrupted : kExitSuccess;
+    return interrupted ? kExitInterrupted : kExitSuccess;
 }
 
 int printFeatures(const CommandLine& line)
@@ -175,7 +156,8 @@ int printShader(const CommandLine& line)
 {
     const scene::Scene scene = scene::parseSceneFile(line.scene);
     const render::SceneShaderCode code = render::generateSceneShaderCode(
-        scene::dropInvisibleObjects(scene), line.settings.variant, line.settings.exactGeometry);
+        scene::dropInvisibleObjects(scene), line.settings.variant,
+        render::EnvironmentBinding::BuiltIn, line.settings.exactGeometry);
     std::cout << render::assemblePathTracerSource(code,
                                                   scene::FileLookup::dataDirectory() / "shaders")
                      .text();

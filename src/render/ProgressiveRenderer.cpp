@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -21,6 +22,18 @@ std::filesystem::path shaderDirectory()
 double secondsSince(std::chrono::steady_clock::time_point start)
 {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Pixels along a side of the preview's coarse grid.
+int coarseSide(int side, int divisor)
+{
+    return std::max(1, (side + divisor - 1) / divisor);
+}
+
+EnvironmentBinding environmentBinding(const RenderSettings& settings)
+{
+    return settings.switchableEnvironment ? EnvironmentBinding::FromUniform
+                                          : EnvironmentBinding::BuiltIn;
 }
 
 }  // namespace
@@ -42,9 +55,10 @@ void checkRenderSize(int width, int height)
 ProgressiveRenderer::ProgressiveRenderer(const scene::Scene& scene, int width, int height,
                                          const RenderSettings& settings)
     : settings_(settings),
-      code_(generateSceneShaderCode(scene::dropInvisibleObjects(scene), settings.variant,
+      scene_(scene::dropInvisibleObjects(scene)),
+      code_(generateSceneShaderCode(scene_, settings.variant, environmentBinding(settings),
                                     settings.exactGeometry)),
-      uniforms_(packSceneUniforms(scene::dropInvisibleObjects(scene), code_)),
+      uniforms_(packSceneUniforms(scene_, code_)),
       program_((checkRenderSize(width, height),
                 std::make_unique<PathTracerProgram>(code_, shaderDirectory()))),
       pigmentTextures_(loadPigmentTextures(uniforms_.textureLayers)),
@@ -68,23 +82,68 @@ void ProgressiveRenderer::uploadAll()
     gl::throwOnGlError("uploading the scene");
 }
 
-void ProgressiveRenderer::setScene(const scene::Scene& original)
+ReloadDecision ProgressiveRenderer::setScene(const scene::Scene& original,
+                                             const std::vector<std::filesystem::path>& changedFiles)
 {
-    const scene::Scene scene = scene::dropInvisibleObjects(original);
-    SceneShaderCode code =
-        generateSceneShaderCode(scene, settings_.variant, settings_.exactGeometry);
+    scene::Scene scene = scene::dropInvisibleObjects(original);
+    SceneShaderCode code = generateSceneShaderCode(scene, settings_.variant,
+                                                   environmentBinding(settings_),
+                                                   settings_.exactGeometry);
     SceneUniforms uniforms = packSceneUniforms(scene, code);
-    const bool sameStructure = code.defines == code_.defines &&
-                               code.sceneFunctions == code_.sceneFunctions &&
-                               code.userSdfFiles == code_.userSdfFiles;
-    if (uniforms.textureLayers != uniforms_.textureLayers)
-        pigmentTextures_ = loadPigmentTextures(uniforms.textureLayers);
+    const ReloadDecision decision =
+        decideReload(code_, code, uniforms_.textureLayers, uniforms.textureLayers, changedFiles);
+    // Everything that can fail comes first: until the new program and textures exist, the
+    // renderer keeps the old ones.
+    std::unique_ptr<PathTracerProgram> program =
+        decision.rebuildShader ? std::make_unique<PathTracerProgram>(code, shaderDirectory())
+                               : nullptr;
+    std::optional<PigmentTextures> textures;
+    if (decision.reloadTextures)
+        textures = loadPigmentTextures(uniforms.textureLayers);
+
+    scene_ = std::move(scene);
     code_ = std::move(code);
     uniforms_ = std::move(uniforms);
-    if (!sameStructure)
-        program_ = std::make_unique<PathTracerProgram>(code_, shaderDirectory());
+    if (program)
+        program_ = std::move(program);
+    if (textures)
+        pigmentTextures_ = std::move(*textures);
     uploadAll();
     restartAccumulation();
+    return decision;
+}
+
+void ProgressiveRenderer::setCamera(const scene::Camera& camera)
+{
+    scene_.camera = camera;
+    // The scene's bounds hold the camera, and the tolerances follow the bounds.
+    uniforms_ = packSceneUniforms(scene_, code_);
+    uploadAll();
+    clearAccumulation();
+}
+
+void ProgressiveRenderer::setSettings(const RenderSettings& settings)
+{
+    const ShaderVariant variant = settings_.variant;
+    const bool switchableEnvironment = settings_.switchableEnvironment;
+    settings_ = settings;
+    settings_.variant = variant;
+    settings_.switchableEnvironment = switchableEnvironment;
+    uploadAll();
+    clearAccumulation();
+}
+
+void ProgressiveRenderer::resize(int width, int height)
+{
+    if (width == this->width() && height == this->height())
+        return;
+    checkRenderSize(width, height);
+    targets_ = AccumulationTargets(width, height);
+    rowsPerBand_ = height;
+    frames_ = 0;
+    samplesPerPixel_ = 0;
+    previewDivisor_ = 0;
+    uploadAll();
 }
 
 void ProgressiveRenderer::restartAccumulation()
@@ -92,10 +151,62 @@ void ProgressiveRenderer::restartAccumulation()
     targets_ = AccumulationTargets(width(), height());
     frames_ = 0;
     samplesPerPixel_ = 0;
+    previewDivisor_ = 0;
+}
+
+void ProgressiveRenderer::clearAccumulation()
+{
+    const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+    const AccumulationTargets::Set& shown = targets_.previous();
+    shown.framebuffer.bindForDrawing();
+    glDisable(GL_SCISSOR_TEST);
+    glClearBufferfv(GL_COLOR, 0, zero);  // estimate
+    glClearBufferfv(GL_COLOR, 1, zero);  // moments
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl::throwOnGlError("restarting the accumulation");
+    frames_ = 0;
+    samplesPerPixel_ = 0;
+    previewDivisor_ = 0;
+}
+
+void ProgressiveRenderer::renderPreview(int divisor, int maxBounces)
+{
+    divisor = std::clamp(divisor, 1, std::max(width(), height()));
+    const int previewWidth = coarseSide(width(), divisor);
+    const int previewHeight = coarseSide(height(), divisor);
+    clearAccumulation();
+
+    const gl::Program& program = program_->program();
+    program.use();
+    // The camera spans the coarse grid, which fills the lower-left corner of the targets.
+    glUniform2f(program.uniformLocation("uImageSize"), static_cast<float>(previewWidth),
+                static_cast<float>(previewHeight));
+    glUniform1i(program.uniformLocation("uMaxBounces"), std::min(maxBounces, settings_.maxBounces));
+    glUniform1i(program.uniformLocation("uSamplesPerFrame"), 1);
+    glUniform1i(program.uniformLocation("uSampleTarget"), 0);
+    const AccumulationTargets::Set& source = targets_.previous();
+    source.estimate.bind(0);
+    source.moments.bind(1);
+    pigmentTextures_.texture.bind(3);
+    targets_.next().framebuffer.bindForDrawing();
+    glViewport(0, 0, width(), height());
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, previewWidth, previewHeight);
+    triangle_.drawFullscreenTriangle();
+    glDisable(GL_SCISSOR_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glUniform2f(program.uniformLocation("uImageSize"), static_cast<float>(width()),
+                static_cast<float>(height()));
+    glUniform1i(program.uniformLocation("uMaxBounces"), settings_.maxBounces);
+    gl::throwOnGlError("rendering a preview");
+    targets_.swap();
+    previewDivisor_ = divisor;
 }
 
 bool ProgressiveRenderer::renderFrame(const std::function<bool()>& keepGoing, int samples)
 {
+    if (showsPreview())
+        clearAccumulation();
     if (samples <= 0)
         samples = std::max(1, settings_.samplesPerFrame);
     if (!drawFrame(keepGoing, samples, samplesPerPixel_ + samples))
@@ -228,14 +339,21 @@ std::uint64_t ProgressiveRenderer::discardedSamples() const
 
 io::Image ProgressiveRenderer::toneMapped() const
 {
-    return toneMapper_.render(targets_.previous().estimate, width(), height(), triangle_);
+    return toneMapper_.render(targets_.previous().estimate, width(), height(), triangle_,
+                              exposure_);
 }
 
 void ProgressiveRenderer::displayToWindow(int windowWidth, int windowHeight) const
 {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    toneMapper_.draw(targets_.previous().estimate, width(), height(), windowWidth, windowHeight,
-                     triangle_);
+    int shownWidth = width();
+    int shownHeight = height();
+    if (showsPreview()) {
+        shownWidth = coarseSide(width(), previewDivisor_);
+        shownHeight = coarseSide(height(), previewDivisor_);
+    }
+    toneMapper_.draw(targets_.previous().estimate, shownWidth, shownHeight, windowWidth,
+                     windowHeight, triangle_, exposure_);
 }
 
 }  // namespace render

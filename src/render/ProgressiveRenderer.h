@@ -3,6 +3,7 @@
 #include "io/Image.h"
 #include "render/AccumulationTargets.h"
 #include "render/PathTracerProgram.h"
+#include "render/ReloadDecision.h"
 #include "render/RenderSettings.h"
 #include "render/SceneUniforms.h"
 #include "render/TextureArrayLoader.h"
@@ -10,8 +11,10 @@
 #include "scene/Scene.h"
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <memory>
+#include <vector>
 
 namespace render {
 
@@ -42,8 +45,29 @@ public:
     int fewestSamples() const;
 
     // Replaces the scene: if its shader code is unchanged (only values differ) the uniforms
-    // are re-uploaded; otherwise the shader is rebuilt. Either way accumulation restarts.
-    void setScene(const scene::Scene& scene);
+    // are re-uploaded; otherwise the shader is rebuilt (render/ReloadDecision.h decides).
+    // `changedFiles`: files changed on disk since the scene shown was loaded; a user SDF file
+    // among them rebuilds the shader, a texture reloads the textures. Either way
+    // accumulation restarts. Returns what was redone. When the new shader does not compile
+    // or a texture cannot be read it throws, and the renderer is as it was: same shader,
+    // same scene, same image.
+    ReloadDecision setScene(const scene::Scene& scene,
+                            const std::vector<std::filesystem::path>& changedFiles = {});
+
+    // The view changes: another camera, settings or image size. Uniforms only, never a
+    // recompile; the accumulation starts again from nothing.
+    void setCamera(const scene::Camera& camera);
+    // Every setting but the shader's (variant, switchable environment), which stay as built.
+    void setSettings(const RenderSettings& settings);
+    void resize(int width, int height);
+    const RenderSettings& settings() const { return settings_; }
+
+    // One cheap picture while the view keeps changing: one path per pixel for a grid
+    // `divisor` times coarser than the image, with at most `maxBounces` bounces. It replaces
+    // the estimate on screen but is no part of the accumulation: samplesPerPixel() is 0 and
+    // the next renderFrame starts from nothing.
+    void renderPreview(int divisor, int maxBounces);
+    bool showsPreview() const { return previewDivisor_ > 0; }
 
     int width() const { return targets_.width(); }
     int height() const { return targets_.height(); }
@@ -61,6 +85,9 @@ public:
     io::Image toneMapped() const;
     // Draws the tone-mapped picture into the window's default framebuffer.
     void displayToWindow(int windowWidth, int windowHeight) const;
+    // The tone map's exposure (display only: the accumulation goes on).
+    void setExposure(float exposure) { exposure_ = exposure; }
+    float exposure() const { return exposure_; }
 
     const std::string& fragmentSource() const { return program_->fragmentSource(); }
     const scene::SceneFeatures& features() const { return code_.features; }
@@ -71,13 +98,16 @@ public:
     double lastSecondsPerSample() const { return lastSecondsPerSample_; }
 
 private:
-    void buildProgram();
     void uploadAll();
     void restartAccumulation();
     bool drawFrame(const std::function<bool()>& keepGoing, int samples, int target);
+    // Starts the accumulation again without reseeding: cheaper than restartAccumulation,
+    // for the many restarts of a view being changed.
+    void clearAccumulation();
     io::Image readTarget(const gl::Texture& texture, int channels) const;
 
     RenderSettings settings_;
+    scene::Scene scene_;  // without its invisible objects
     SceneShaderCode code_;
     SceneUniforms uniforms_;
     std::unique_ptr<PathTracerProgram> program_;
@@ -88,6 +118,8 @@ private:
     int frames_ = 0;
     int samplesPerPixel_ = 0;
     int rowsPerBand_ = 0;
+    int previewDivisor_ = 0;  // 0: the estimate is the accumulation
+    float exposure_ = ToneMapper::kDefaultExposure;
     double firstFrameSeconds_ = 0.0;
     double lastSecondsPerSample_ = 0.0;
 };

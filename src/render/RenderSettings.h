@@ -11,8 +11,9 @@ enum class FresnelModel { Schlick, Exact };
 // the sample's own random stream, or the first bounces' from Owen-scrambled Sobol points.
 enum class SamplerKind { Independent, Sobol };
 
-// Every setting that trades accuracy for time. All are uniforms except the shader variant:
-// changing one never recompiles. Defaults are the seed's choices where it made one.
+// Every setting that trades accuracy for time, and the environment switch. All are uniforms
+// except the two that shape the shader (variant, switchableEnvironment): changing one never
+// recompiles. Defaults are the seed's choices where it made one.
 struct RenderSettings {
     // A hit is accepted when the distance is below this fraction of the ray cone's width.
     // Rays passing that close to a surface count as meeting it, which dilates silhouettes
@@ -35,7 +36,13 @@ struct RenderSettings {
     bool rayCulling = true;
     FresnelModel dielectricFresnel = FresnelModel::Schlick;
     SamplerKind sampler = SamplerKind::Sobol;
+    // Rays that escape see the scene's environment; off, they see black. Takes effect only
+    // in a shader that reads the environment from a uniform (switchableEnvironment).
+    bool environmentLight = true;
     ShaderVariant variant = ShaderVariant::Specialized;
+    // The shader reads the environment's kind from a uniform instead of building it in, so
+    // that environmentLight can change without a recompile (the window's panel).
+    bool switchableEnvironment = false;
     // Find surfaces by exact intersection instead of sphere tracing, for the shapes that
     // have a closed form (shaders/modules/ray_queries_exact.glsl): the reference that the
     // tests and docs/ACCURACY.md judge the sphere tracer's geometric error against.

@@ -494,7 +494,7 @@ bool specializesShapes(ShaderVariant variant)
 }
 
 SceneShaderCode generateSceneShaderCode(const Scene& scene, ShaderVariant variant,
-                                        bool exactGeometry)
+                                        EnvironmentBinding environment, bool exactGeometry)
 {
     SceneShaderCode code;
     code.variant = variant;
@@ -557,7 +557,7 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, ShaderVariant varian
     define(out, "HAS_POINT_LIGHTS", f.pointLights ? 1 : 0);
     define(out, "HAS_SPHERE_LIGHTS", f.sphereLights ? 1 : 0);
     out << "#define ENVIRONMENT_KIND_FROM_UNIFORM (-1)\n";
-    if (specializesFeatures(variant))
+    if (specializesFeatures(variant) && environment == EnvironmentBinding::BuiltIn)
         define(out, "ENVIRONMENT_KIND", static_cast<int>(f.environment));
     else
         out << "#define ENVIRONMENT_KIND ENVIRONMENT_KIND_FROM_UNIFORM\n";

@@ -27,6 +27,11 @@ enum class ShaderVariant {
 bool specializesFeatures(ShaderVariant variant);
 bool specializesShapes(ShaderVariant variant);
 
+// Where the shader takes the environment's kind from. A specialised shader builds it in;
+// the window reads it from a uniform so that its panel can switch the environment off
+// without a recompile (the general shader always does).
+enum class EnvironmentBinding { BuiltIn, FromUniform };
+
 // The scene-dependent part of the path-tracing shader: the #defines that switch modules on
 // and size the uniform arrays, the distance functions of the scene, and the shape
 // parameters they read. Only structure (which shapes, which CSG tree, which features)
@@ -53,6 +58,7 @@ struct SceneShaderCode {
 };
 
 SceneShaderCode generateSceneShaderCode(const scene::Scene& scene, ShaderVariant variant,
+                                        EnvironmentBinding environment = EnvironmentBinding::BuiltIn,
                                         bool exactGeometry = false);
 
 }  // namespace render

@@ -189,7 +189,9 @@ void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
     glUniform2f(program.uniformLocation("uImageSize"), static_cast<float>(width),
                 static_cast<float>(height));
 
-    setInt(program, "uEnvironmentKind", static_cast<int>(uniforms.environment.kind));
+    setInt(program, "uEnvironmentKind",
+           static_cast<int>(settings.environmentLight ? uniforms.environment.kind
+                                                      : EnvironmentKind::None));
     setVec3(program, "uEnvironmentColor", uniforms.environment.color);
 
     setFloat(program, "uMinimumHitDistance", uniforms.bounds.minimumHitDistance());

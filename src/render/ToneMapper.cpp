@@ -18,7 +18,7 @@ ToneMapper::ToneMapper(const std::filesystem::path& shaderDirectory)
 }
 
 void ToneMapper::draw(const gl::Texture& estimate, int width, int height, int targetWidth,
-                      int targetHeight, const gl::VertexArray& triangle) const
+                      int targetHeight, const gl::VertexArray& triangle, float exposure) const
 {
     program_.use();
     estimate.bind(0);
@@ -27,19 +27,20 @@ void ToneMapper::draw(const gl::Texture& estimate, int width, int height, int ta
                 static_cast<float>(height));
     glUniform2f(program_.uniformLocation("uTargetSize"), static_cast<float>(targetWidth),
                 static_cast<float>(targetHeight));
+    glUniform1f(program_.uniformLocation("uExposure"), exposure);
     glViewport(0, 0, targetWidth, targetHeight);
     glDisable(GL_SCISSOR_TEST);
     triangle.drawFullscreenTriangle();
 }
 
 io::Image ToneMapper::render(const gl::Texture& estimate, int width, int height,
-                             const gl::VertexArray& triangle) const
+                             const gl::VertexArray& triangle, float exposure) const
 {
     const gl::Texture picture =
         gl::createTexture2D(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     const gl::Framebuffer target({&picture});
     target.bindForDrawing();
-    draw(estimate, width, height, width, height, triangle);
+    draw(estimate, width, height, width, height, triangle, exposure);
     target.bindForReading(0);
     io::Image image = readDisplayPixels(width, height);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -12,15 +12,20 @@ namespace render {
 // the window or to an offscreen target that is read back for image files.
 class ToneMapper {
 public:
+    // The original program's exposure: radiance is multiplied by it before the curve.
+    static constexpr float kDefaultExposure = 4.0f;
+
     explicit ToneMapper(const std::filesystem::path& shaderDirectory);
 
-    // Draws `estimate` (width x height) to whatever framebuffer is bound, of size target.
+    // Draws `estimate` (its lower-left width x height texels) to whatever framebuffer is
+    // bound, of size target.
     void draw(const gl::Texture& estimate, int width, int height, int targetWidth,
-              int targetHeight, const gl::VertexArray& triangle) const;
+              int targetHeight, const gl::VertexArray& triangle,
+              float exposure = kDefaultExposure) const;
 
     // The tone-mapped picture of `estimate` as display values in [0, 1], top row first.
     io::Image render(const gl::Texture& estimate, int width, int height,
-                     const gl::VertexArray& triangle) const;
+                     const gl::VertexArray& triangle, float exposure = kDefaultExposure) const;
 
 private:
     gl::Program program_;

@@ -1,4 +1,5 @@
-// generateSceneShaderCode: the per-ray culling it builds for a scene (ray_culling.glsl).
+// generateSceneShaderCode: the per-ray culling it builds for a scene (ray_culling.glsl), and
+// the polyhedra it leaves out of marches for exact intersection.
 // Which bounds a scene's pieces get, and what numbers stand for them, is structure the host
 // decides; whether the rays then meet the same surfaces is tested by rendering
 // (RayCullingTest.cpp).
@@ -8,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include <regex>
+#include <stdexcept>
+#include <vector>
 
 namespace scene_tests {
 namespace {
@@ -46,17 +49,48 @@ void expectNear(const glm::vec4& actual, const glm::vec4& expected)
         EXPECT_NEAR(actual[i], expected[i], 1e-5f) << "component " << i;
 }
 
-TEST(RayCulling, EveryPlaneOfARoomIsCulledOnItsOwn)
+// The values the k-th clipOutsideHalfSpace call of exactPolyhedraIntersect reads.
+std::vector<glm::vec4> exactClipPlanes(const SceneShaderCode& code)
+{
+    const std::regex expression(
+        R"(clipOutsideHalfSpace\(outside, origin, direction, uShapeParameters\[(\d+)\]\))");
+    std::vector<glm::vec4> planes;
+    for (std::sregex_iterator it(code.sceneFunctions.begin(), code.sceneFunctions.end(),
+                                 expression);
+         it != std::sregex_iterator(); ++it)
+        planes.push_back(code.shapeParameters.at(std::stoul((*it)[1])));
+    return planes;
+}
+
+// The text of one generated function, from its signature to its closing brace.
+std::string functionBody(const std::string& code, const std::string& signature)
+{
+    const std::size_t start = code.find(signature);
+    if (start == std::string::npos)
+        throw std::runtime_error(signature + " not generated");
+    return code.substr(start, code.find("\n}\n", start) - start);
+}
+
+TEST(RayCulling, PolyhedraAreMetByExactIntersectionInsteadOfMarched)
 {
     const SceneShaderCode code =
         specialized("0 0 polyhedron 3  0 1 0 2  1 0 0 4  0 0 -2 6\n", 1);
-    EXPECT_EQ(occurrences(code.sceneFunctions, R"(cullByHalfSpace\()"), 3);
-    // The planes as the distance uses them: unit normals.
-    expectNear(culledBound(code, "cullByHalfSpace", 1), {0, 1, 0, 2});
-    expectNear(culledBound(code, "cullByHalfSpace", 2), {1, 0, 0, 4});
-    expectNear(culledBound(code, "cullByHalfSpace", 4), {0, 0, -1, 3});
-    EXPECT_EQ(occurrences(code.sceneFunctions, R"(escapeDistance = FLOAT_MAX)"), 0)
-        << "every piece has a bound, so a ray escapes once past all of them";
+    // The planes as the exact clip uses them: unit normals, in world space.
+    const std::vector<glm::vec4> planes = exactClipPlanes(code);
+    ASSERT_EQ(planes.size(), 3u);
+    expectNear(planes[0], {0, 1, 0, 2});
+    expectNear(planes[1], {1, 0, 0, 4});
+    expectNear(planes[2], {0, 0, -1, 3});
+    EXPECT_EQ(occurrences(code.sceneFunctions, R"(cullByHalfSpace\()"), 0)
+        << "a polyhedron needs no culling bits: marches leave it out";
+    EXPECT_EQ(occurrences(functionBody(code.sceneFunctions, "float sceneDistanceCulled("),
+                          R"(shape0\(p\))"),
+              0)
+        << "the marched distance leaves the polyhedron out";
+    EXPECT_EQ(occurrences(functionBody(code.sceneFunctions, "float sceneDistance(vec3 p)"),
+                          R"(shape0\(p\))"),
+              1)
+        << "point queries (which side a ray starts on) still see it";
 }
 
 TEST(RayCulling, FiniteObjectsAreCulledByTheirBoundingBalls)
@@ -82,13 +116,15 @@ TEST(RayCulling, ConeIsCulledByTheHalfSpaceOnTheFarSideOfItsApex)
     expectNear(culledBound(up, "cullByHalfSpace", 1), {0, -0.8f, 0, 1.6f});
 }
 
-TEST(RayCulling, TransformedPolyhedronIsCulledByItsPlanesInWorldSpace)
+TEST(RayCulling, TransformedPolyhedronIsMetByItsPlanesInWorldSpace)
 {
     // The solid y <= 0, scaled by 2, turned 90 degrees about z (the solid x >= 0, or
     // -x <= 0) and moved by 1 along x: the solid x >= 1.
     const SceneShaderCode code =
         specialized("0 0 translate 1 0 0 rotate 0 0 1 90 scale 2 polyhedron 1  0 1 0 0\n", 1);
-    expectNear(culledBound(code, "cullByHalfSpace", 1), {-1, 0, 0, 1});
+    const std::vector<glm::vec4> planes = exactClipPlanes(code);
+    ASSERT_EQ(planes.size(), 1u);
+    expectNear(planes[0], {-1, 0, 0, 1});
 }
 
 TEST(RayCulling, ObjectsWithoutABoundMakeEveryRayMarchToTheFarDistance)

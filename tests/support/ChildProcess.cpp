@@ -65,7 +65,9 @@ ProcessResult runProcess(const std::vector<std::string>& arguments, const Proces
 
     int outputPipe[2];
     int errorPipe[2];
-    if (pipe(outputPipe) != 0 || pipe(errorPipe) != 0)
+    // Close-on-exec: another thread may fork a child of its own meanwhile (the window tests
+    // drive xdotool while the program runs), which must not hold these pipes open.
+    if (pipe2(outputPipe, O_CLOEXEC) != 0 || pipe2(errorPipe, O_CLOEXEC) != 0)
         throw std::runtime_error("pipe failed");
 
     const auto start = std::chrono::steady_clock::now();

@@ -1,0 +1,27 @@
+#pragma once
+
+namespace app {
+
+// Paths per pixel in the next frame so that it takes about `targetFrameSeconds`, from what
+// one path per pixel took in the last frame: at least 1 and at most 16. Several paths per
+// frame keep SIMD lanes busy (a pixel whose path ends starts the next at once) and the
+// per-draw overhead small; a window still wants frequent frames.
+int samplesPerFrameFor(double targetFrameSeconds, double secondsPerSample);
+
+// While the view changes the window shows one cheap sample per frame on a coarse grid
+// (ProgressiveRenderer::renderPreview). The grid's divisor follows the time the last such
+// frame took, drawing and showing included: one step coarser when it took longer than
+// kSlowPreviewSeconds, one step finer when it took less than kFastPreviewSeconds, within 1
+// to kMaxPreviewDivisor. The band between the two keeps it from flickering between sizes.
+constexpr double kSlowPreviewSeconds = 0.07;
+constexpr double kFastPreviewSeconds = 0.025;
+constexpr int kMaxPreviewDivisor = 16;
+int nextPreviewDivisor(int divisor, double lastPreviewFrameSeconds);
+
+// The divisor for the first preview, before any was timed: the smallest whose grid takes
+// at most kFirstPreviewSeconds at the cost of one full-resolution sample
+// (`secondsPerFullSample`, with every bounce: a preview's fewer bounces only make it cheaper).
+constexpr double kFirstPreviewSeconds = 0.04;
+int firstPreviewDivisor(double secondsPerFullSample);
+
+}  // namespace app

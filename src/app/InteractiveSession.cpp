@@ -1,0 +1,385 @@
+#include "app/InteractiveSession.h"
+
+#include "app/FramePacing.h"
+#include "app/SceneLoading.h"
+#include "app/Snapshot.h"
+#include "render/ConvergenceEstimate.h"
+#include "scene/SceneBounds.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+namespace app {
+
+namespace {
+
+// The target time of a frame that adds samples: short enough for the panel to answer.
+constexpr double kTargetFrameSeconds = 0.15;
+// Bounces of a preview sample: enough for light to pass through glass spheres and reach what
+// is seen through them (with 2, glass is black), while the longest paths, which cost much and
+// add little to a picture that lasts one frame, are cut.
+constexpr int kPreviewBounces = 6;
+// After the last change of the view, the preview stays this long before the accumulation
+// starts: the pause between two mouse events of a slow drag is not a stop.
+constexpr double kSettleSeconds = 0.15;
+constexpr double kWatchIntervalSeconds = 0.25;
+constexpr double kTitleIntervalSeconds = 0.25;
+constexpr double kEstimateIntervalSeconds = 0.5;
+// The most a held fly key moves the camera in one step, in seconds of flight: a slow frame
+// must not make a jump.
+constexpr double kLongestFlightStep = 0.1;
+
+double secondsBetween(std::chrono::steady_clock::time_point from,
+                      std::chrono::steady_clock::time_point to)
+{
+    return std::chrono::duration<double>(to - from).count();
+}
+
+float sceneRadius(const scene::Scene& scene)
+{
+    return scene::computeSceneBounds(scene).radius;
+}
+
+// A message on one line, for the title.
+std::string oneLine(const std::string& text)
+{
+    std::string line;
+    for (char c : text)
+        line += c == '\n' ? ' ' : c;
+    constexpr std::size_t kLongest = 240;
+    if (line.size() > kLongest)
+        line = line.substr(0, kLongest) + "...";
+    return line;
+}
+
+}  // namespace
+
+InteractiveSession::InteractiveSession(platform::GlfwWindowContext& window,
+                                       render::ProgressiveRenderer& renderer,
+                                       const scene::Scene& scene, const CommandLine& line,
+                                       const InterruptWatch& interrupt)
+    : window_(window),
+      renderer_(renderer),
+      line_(line),
+      interrupt_(interrupt),
+      fileScene_(scene),
+      camera_(scene.camera, sceneRadius(scene)),
+      panel_(window.glfwWindow())
+{
+    watcher_.watch(filesOfScene(line.scene, scene));
+    panelSettings_.exposure = renderer.exposure();
+    panelSettings_.hitTolerance = renderer.settings().hitTolerance;
+    panelSettings_.maxBounces = renderer.settings().maxBounces;
+    panelSettings_.environment = renderer.settings().environmentLight;
+}
+
+bool InteractiveSession::reachedEnd(Clock::time_point start) const
+{
+    if (line_.samplesPerPixel && renderer_.samplesPerPixel() >= *line_.samplesPerPixel)
+        return true;
+    return line_.seconds && secondsBetween(start, Clock::now()) >= *line_.seconds;
+}
+
+bool InteractiveSession::run()
+{
+    const Clock::time_point start = Clock::now();
+    restartClock();
+    lastViewChange_ = start - std::chrono::seconds(1);
+    Clock::time_point lastIteration = start;
+    Clock::time_point lastWatch = start;
+    Clock::time_point lastEstimate = start;
+    std::optional<double> relativeError;
+    int samplesPerFrame = line_.settings.samplesPerFrame;
+    bool settingsChanged = false;
+    bool reached = false;
+    auto keepGoing = [&] {
+        // Input ends a frame between bands, so that the view answers at once.
+        return !interrupt_.requested() && !window_.closeRequested() &&
+               !window_.hasPendingInput() && !reachedEnd(start);
+    };
+
+    while (!interrupt_.requested() && !window_.closeRequested()) {
+        if (reachedEnd(start)) {
+            reached = true;
+            break;
+        }
+        const Clock::time_point now = Clock::now();
+        const double sinceLastIteration =
+            std::min(secondsBetween(lastIteration, now), kLongestFlightStep);
+        lastIteration = now;
+
+        const platform::WindowInput input = window_.takeInput();
+        bool viewChanged = answerInput(input, sinceLastIteration) || settingsChanged;
+        viewChanged = followWindowSize() || viewChanged;
+        if (secondsBetween(lastWatch, now) >= kWatchIntervalSeconds) {
+            lastWatch = now;
+            if (reloadChangedFiles())
+                restartClock();
+        }
+        if (viewChanged) {
+            renderer_.setCamera(camera_.camera());
+            lastViewChange_ = now;
+            restartClock();
+            relativeError.reset();
+        }
+
+        const bool dragging = input.isDown(platform::MouseButton::Left) ||
+                              input.isDown(platform::MouseButton::Right) ||
+                              input.isDown(platform::MouseButton::Middle);
+        const bool settling = secondsBetween(lastViewChange_, now) < kSettleSeconds;
+        if (viewChanged) {
+            if (previewFrameSeconds_ == 0.0 && renderer_.lastSecondsPerSample() > 0.0)
+                previewDivisor_ = firstPreviewDivisor(renderer_.lastSecondsPerSample());
+            renderer_.renderPreview(previewDivisor_, kPreviewBounces);
+        } else if (renderer_.showsPreview() && (settling || dragging)) {
+            // The view may go on changing: keep the preview, and do not spin.
+            window_.waitForInput(0.01);
+        } else {
+            int samples = renderer_.frames() == 0 ? 1 : samplesPerFrame;
+            if (line_.samplesPerPixel)
+                samples = std::min(samples, *line_.samplesPerPixel - renderer_.samplesPerPixel());
+            if (renderer_.renderFrame(keepGoing, samples)) {
+                if (!line_.samplesPerFrameGiven && renderer_.frames() > 1)
+                    samplesPerFrame =
+                        samplesPerFrameFor(kTargetFrameSeconds, renderer_.lastSecondsPerSample());
+                if (rebuildStart_) {
+                    char text[160];
+                    std::snprintf(text, sizeof text,
+                                  "reloaded: structure changed, shader rebuilt; first frame "
+                                  "%.2f s after the edit was seen",
+                                  secondsBetween(*rebuildStart_, Clock::now()));
+                    setStatus(text, false);
+                    rebuildStart_.reset();
+                }
+            }
+        }
+
+        if (!renderer_.showsPreview() && renderer_.samplesPerPixel() >= 2 &&
+            secondsBetween(lastEstimate, Clock::now()) >= kEstimateIntervalSeconds) {
+            lastEstimate = Clock::now();
+            relativeError =
+                render::relativeRmsError(renderer_.radiance(), renderer_.sampleStatistics());
+            if (relativeError)
+                history_.add(secondsBetween(accumulationStart_, lastEstimate),
+                             static_cast<float>(*relativeError));
+        }
+        settingsChanged = showFrame(relativeError);
+        if (viewChanged) {
+            const double frameSeconds = secondsBetween(now, Clock::now());
+            previewDivisor_ = nextPreviewDivisor(previewDivisor_, frameSeconds);
+            // Smoothed over about ten frames, for the title and the panel.
+            previewFrameSeconds_ = previewFrameSeconds_ > 0.0
+                                       ? 0.9 * previewFrameSeconds_ + 0.1 * frameSeconds
+                                       : frameSeconds;
+        }
+    }
+    // What is written at the end is an accumulation, not the coarse picture of a moving view.
+    if (renderer_.showsPreview() && (line_.isBatch() || line_.output))
+        renderer_.renderFrame({}, 1);
+    renderSeconds_ = secondsBetween(start, Clock::now());
+    return reached;
+}
+
+bool InteractiveSession::answerInput(const platform::WindowInput& input, double seconds)
+{
+    const scene::Camera before = camera_.camera();
+    if (!panel_.wantsMouse()) {
+        const float height = static_cast<float>(std::max(window_.windowSize().height, 1));
+        camera_.orbit(input.dragOf(platform::MouseButton::Left), height);
+        camera_.pan(input.dragOf(platform::MouseButton::Right) +
+                        input.dragOf(platform::MouseButton::Middle),
+                    height);
+        camera_.dolly(input.wheelSteps);
+    }
+    if (!panel_.wantsKeyboard()) {
+        for (const platform::KeyPress& press : input.keyPresses) {
+            if (press.key == platform::Key::Tab)
+                panel_.toggle();
+            else if (press.key == platform::Key::R && !press.control)
+                camera_.returnHome();
+            else if (press.key == platform::Key::S && press.control)
+                save();
+        }
+        // Ctrl makes a key a command (Ctrl+S), not a flight.
+        if (!input.controlHeld) {
+            using platform::Key;
+            const glm::vec3 direction(
+                static_cast<float>(input.held(Key::D)) - static_cast<float>(input.held(Key::A)),
+                static_cast<float>(input.held(Key::E)) - static_cast<float>(input.held(Key::Q)),
+                static_cast<float>(input.held(Key::W)) - static_cast<float>(input.held(Key::S)));
+            camera_.fly(direction, static_cast<float>(seconds), input.shiftHeld);
+        }
+    }
+    return !render::sameCamera(before, camera_.camera());
+}
+
+bool InteractiveSession::applyPanelSettings(const PanelSettings& tuned)
+{
+    if (tuned == panelSettings_)
+        return false;
+    renderer_.setExposure(tuned.exposure);
+    const bool viewChanged = tuned.hitTolerance != panelSettings_.hitTolerance ||
+                             tuned.maxBounces != panelSettings_.maxBounces ||
+                             tuned.environment != panelSettings_.environment;
+    panelSettings_ = tuned;
+    if (!viewChanged)
+        return false;
+    render::RenderSettings settings = renderer_.settings();
+    settings.hitTolerance = tuned.hitTolerance;
+    settings.maxBounces = tuned.maxBounces;
+    settings.environmentLight = tuned.environment;
+    renderer_.setSettings(settings);
+    return true;
+}
+
+bool InteractiveSession::followWindowSize()
+{
+    const platform::DrawableSize size = window_.windowFramebufferSize();
+    if (size.width <= 0 || size.height <= 0 ||
+        (size.width == renderer_.width() && size.height == renderer_.height()))
+        return false;
+    try {
+        renderer_.resize(size.width, size.height);
+    } catch (const std::exception& error) {
+        setStatus(std::string("cannot render at the window's size: ") + error.what(), true);
+        return false;
+    }
+    return true;
+}
+
+bool InteractiveSession::reloadChangedFiles()
+{
+    const std::vector<std::filesystem::path> changed = watcher_.changedFiles();
+    if (changed.empty())
+        return false;
+    const Clock::time_point start = Clock::now();
+    try {
+        scene::Scene edited = loadScene(line_.scene);
+        const Clock::time_point loaded = Clock::now();
+        render::CameraController camera = camera_;
+        camera.setHome(edited.camera, sceneRadius(edited),
+                       render::cameraLinesChanged(fileScene_.camera, edited.camera));
+        scene::Scene shown = edited;
+        shown.camera = camera.camera();
+        const render::ReloadDecision decision = renderer_.setScene(shown, changed);
+        const double readSeconds = secondsBetween(start, loaded);
+        const double uploadSeconds = secondsBetween(loaded, Clock::now());
+        camera_ = camera;
+        fileScene_ = std::move(edited);
+        watcher_.watch(filesOfScene(line_.scene, fileScene_));
+        char text[200];
+        if (decision.rebuildShader) {
+            std::snprintf(text, sizeof text,
+                          "reloaded: structure changed, shader rebuilt (compile and link "
+                          "%.2f s)%s",
+                          renderer_.compileSeconds(),
+                          decision.reloadTextures ? ", textures reloaded" : "");
+            rebuildStart_ = start;
+        } else {
+            std::snprintf(text, sizeof text,
+                          "reloaded: values only, uniforms re-uploaded without a recompile "
+                          "(reading the file %.1f ms, uploading and restarting the "
+                          "accumulation %.1f ms)%s",
+                          1000.0 * readSeconds, 1000.0 * uploadSeconds,
+                          decision.reloadTextures ? ", textures reloaded" : "");
+            rebuildStart_.reset();
+        }
+        setStatus(text, false);
+        history_.clear();
+        return true;
+    } catch (const std::exception& error) {
+        setStatus(std::string("error: ") + error.what() +
+                      " (the last good scene stays on screen)",
+                  true);
+        return false;
+    }
+}
+
+void InteractiveSession::save()
+{
+    if (renderer_.showsPreview() || renderer_.samplesPerPixel() == 0) {
+        setStatus("nothing to save yet: the image has no samples while the view changes", true);
+        return;
+    }
+    const SnapshotFiles files =
+        snapshotFiles(line_.scene, renderer_.samplesPerPixel(), line_.output);
+    try {
+        writeSnapshot(renderer_, files);
+        setStatus("saved " + files.picture.string() + " and " + files.radiance.string(), false);
+    } catch (const std::exception& error) {
+        setStatus(std::string("error: cannot save: ") + error.what(), true);
+    }
+}
+
+void InteractiveSession::setStatus(std::string status, bool isError)
+{
+    status_ = std::move(status);
+    statusIsError_ = isError;
+    if (isError)
+        std::cerr << "raytracer: " << status_ << std::endl;
+    else
+        std::cout << "raytracer: " << status_ << std::endl;
+    window_.setTitle(title());
+}
+
+void InteractiveSession::restartClock()
+{
+    accumulationStart_ = Clock::now();
+    history_.clear();
+}
+
+bool InteractiveSession::showFrame(const std::optional<double>& relativeError)
+{
+    const platform::DrawableSize size = window_.windowFramebufferSize();
+    if (size.width <= 0 || size.height <= 0) {
+        window_.waitForInput(0.05);  // minimised: nothing to draw
+        return false;
+    }
+    renderer_.displayToWindow(size.width, size.height);
+    PanelReadings readings;
+    readings.width = renderer_.width();
+    readings.height = renderer_.height();
+    readings.samplesPerPixel = renderer_.samplesPerPixel();
+    readings.elapsedSeconds = secondsBetween(accumulationStart_, Clock::now());
+    readings.samplesPerSecond =
+        readings.elapsedSeconds > 0.0 ? readings.samplesPerPixel / readings.elapsedSeconds : 0.0;
+    readings.previewing = renderer_.showsPreview();
+    readings.previewDivisor = previewDivisor_;
+    readings.previewFramesPerSecond =
+        previewFrameSeconds_ > 0.0 ? 1.0 / previewFrameSeconds_ : 0.0;
+    readings.relativeError = relativeError;
+    readings.history = &history_;
+    readings.features = renderer_.features().describe();
+    readings.status = status_;
+    readings.statusIsError = statusIsError_;
+    const PanelSettings tuned = panel_.draw(readings, panelSettings_);
+    window_.present();
+    if (secondsBetween(lastTitle_, Clock::now()) >= kTitleIntervalSeconds) {
+        window_.setTitle(title());
+        lastTitle_ = Clock::now();
+    }
+    return applyPanelSettings(tuned);
+}
+
+std::string InteractiveSession::title() const
+{
+    const double elapsed = secondsBetween(accumulationStart_, Clock::now());
+    char text[160];
+    std::snprintf(text, sizeof text, "raytracer - %s - %dx%d - %d spp, %.2f spp/s",
+                  line_.scene.filename().string().c_str(), renderer_.width(), renderer_.height(),
+                  renderer_.samplesPerPixel(),
+                  elapsed > 0.0 ? renderer_.samplesPerPixel() / elapsed : 0.0);
+    std::string result = text;
+    if (renderer_.showsPreview()) {
+        std::snprintf(text, sizeof text, " - moving, %.1f fps at 1/%d resolution",
+                      previewFrameSeconds_ > 0.0 ? 1.0 / previewFrameSeconds_ : 0.0,
+                      previewDivisor_);
+        result += text;
+    }
+    if (!status_.empty())
+        result += " - " + oneLine(status_);
+    return result;
+}
+
+}  // namespace app

@@ -1,0 +1,85 @@
+#pragma once
+#include "app/CommandLine.h"
+#include "app/ConvergenceHistory.h"
+#include "app/FileWatcher.h"
+#include "app/Interrupt.h"
+#include "app/StatisticsPanel.h"
+#include "platform/GlfwWindowContext.h"
+#include "render/CameraController.h"
+#include "render/ProgressiveRenderer.h"
+#include "scene/Scene.h"
+
+#include <chrono>
+#include <optional>
+#include <string>
+
+namespace app {
+
+// The window: it shows the estimate converging and answers the user. The mouse and the
+// keys move the camera (render::CameraController); while the view changes, each frame is
+// one cheap sample on a coarse grid, and once it stops the accumulation goes on at full
+// rate. The scene file and the files it names are watched: an edit of values re-uploads
+// uniforms, an edit of structure rebuilds the shader, a broken edit leaves the last good
+// scene on screen with the error in the panel, the title and on standard error. Ctrl+S
+// saves PNG + EXR; Tab shows or hides the statistics panel; a resized window renders at its
+// new size.
+class InteractiveSession {
+public:
+    // `scene`: the scene file as loaded, whose shader `renderer` was built with (with
+    // switchableEnvironment, for the panel's environment switch).
+    InteractiveSession(platform::GlfwWindowContext& window, render::ProgressiveRenderer& renderer,
+                       const scene::Scene& scene, const CommandLine& line,
+                       const InterruptWatch& interrupt);
+
+    // Runs until the window is closed, Ctrl-C, or the end the command line sets (SECONDS or
+    // --spp). True when that end was reached; a window closed before it is an interrupted
+    // render. The renderer then holds an accumulation, never a preview.
+    bool run();
+
+    // Seconds from the start of run to its end.
+    double renderSeconds() const { return renderSeconds_; }
+
+private:
+    using Clock = std::chrono::steady_clock;
+
+    bool reachedEnd(Clock::time_point start) const;
+    // Moves the camera and acts on keys; true when the view changed.
+    bool answerInput(const platform::WindowInput& input, double seconds);
+    // Settings tuned in the panel; true when the view changed (exposure does not change it).
+    bool applyPanelSettings(const PanelSettings& tuned);
+    // A window of another size renders at that size; true when it changed.
+    bool followWindowSize();
+    // Reloads the scene when one of its files changed; true when the scene on screen was
+    // replaced.
+    bool reloadChangedFiles();
+    void save();
+    void setStatus(std::string status, bool isError);
+    void restartClock();
+    // Draws the estimate and the panel, and shows them; true when the panel changed a
+    // setting that changes the view.
+    bool showFrame(const std::optional<double>& relativeError);
+    std::string title() const;
+
+    platform::GlfwWindowContext& window_;
+    render::ProgressiveRenderer& renderer_;
+    const CommandLine& line_;
+    const InterruptWatch& interrupt_;
+    scene::Scene fileScene_;  // as last read from the file, its camera the file's
+    render::CameraController camera_;
+    FileWatcher watcher_;
+    StatisticsPanel panel_;
+    PanelSettings panelSettings_;
+    ConvergenceHistory history_;
+    std::string status_;
+    bool statusIsError_ = false;
+    int previewDivisor_ = 2;
+    double previewFrameSeconds_ = 0.0;  // smoothed time of a frame while the view changes
+    Clock::time_point accumulationStart_;
+    Clock::time_point lastViewChange_;
+    Clock::time_point lastTitle_;
+    // A structural reload: when it started, until the first frame after it is drawn.
+    std::optional<Clock::time_point> rebuildStart_;
+    double renderSeconds_ = 0.0;
+};
+
+}  // namespace app

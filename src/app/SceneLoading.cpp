@@ -1,0 +1,45 @@
+#include "app/SceneLoading.h"
+
+#include "io/ImageFile.h"
+#include "scene/SceneFeatures.h"
+#include "scene/SceneParser.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace app {
+
+scene::Scene loadScene(const std::filesystem::path& path)
+{
+    scene::Scene scene = scene::parseSceneFile(path);
+    for (const scene::Pigment& pigment : scene.pigments)
+        if (pigment.kind == scene::PigmentKind::Texture) {
+            try {
+                io::checkReadableImage(pigment.texturePath);
+            } catch (const std::exception& error) {
+                throw std::runtime_error(path.string() + ":" + std::to_string(pigment.line) +
+                                         ": texture '" + pigment.textureName + "': " +
+                                         error.what());
+            }
+        }
+    return scene;
+}
+
+std::vector<std::filesystem::path> filesOfScene(const std::filesystem::path& sceneFile,
+                                                const scene::Scene& scene)
+{
+    std::vector<std::filesystem::path> files = {sceneFile};
+    auto add = [&files](const std::filesystem::path& file) {
+        if (std::find(files.begin(), files.end(), file) == files.end())
+            files.push_back(file);
+    };
+    for (const auto& [name, path] : scene::analyseFeatures(scene).userSdfs)
+        add(path);
+    for (const scene::Pigment& pigment : scene.pigments)
+        if (pigment.kind == scene::PigmentKind::Texture)
+            add(pigment.texturePath);
+    return files;
+}
+
+}  // namespace app

@@ -1,0 +1,23 @@
+#pragma once
+#include "render/ProgressiveRenderer.h"
+
+#include <filesystem>
+#include <optional>
+
+namespace app {
+
+struct SnapshotFiles {
+    std::filesystem::path picture;   // tone-mapped, 8-bit PNG
+    std::filesystem::path radiance;  // linear HDR, EXR
+};
+
+// Where the window's save key writes: NAME-Nspp.png and NAME-Nspp.exr, NAME being the scene
+// file's name without its extension, in the folder of `output` (--output) when given, else
+// in the current folder.
+SnapshotFiles snapshotFiles(const std::filesystem::path& sceneFile, int samplesPerPixel,
+                            const std::optional<std::filesystem::path>& output);
+
+// Writes the image the renderer holds as both files (each complete or not at all).
+void writeSnapshot(const render::ProgressiveRenderer& renderer, const SnapshotFiles& files);
+
+}  // namespace app

@@ -1,0 +1,156 @@
+// The window session's parts that need no window: which files it watches and how it sees
+// them change, how it paces frames and previews, what it names saved images, and the history
+// behind the convergence plot.
+#include "app/ConvergenceHistory.h"
+#include "app/FileWatcher.h"
+#include "app/FramePacing.h"
+#include "app/SceneLoading.h"
+#include "app/Snapshot.h"
+#include "scene/SceneTestSupport.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <unistd.h>
+
+namespace interaction_tests {
+namespace {
+
+namespace fs = std::filesystem;
+
+class FileWatcherTest : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        folder_ = fs::temp_directory_path() /
+                  ("raytracer-watch-" + std::to_string(::getpid()) + "-" +
+                   ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::create_directories(folder_);
+    }
+    void TearDown() override { fs::remove_all(folder_); }
+
+    fs::path write(const std::string& name, const std::string& text)
+    {
+        std::ofstream(folder_ / name) << text;
+        return folder_ / name;
+    }
+
+    fs::path folder_;
+};
+
+TEST_F(FileWatcherTest, ReportsEachChangeOnce)
+{
+    const fs::path scene = write("scene.in", "one");
+    const fs::path other = write("other.glsl", "two");
+    app::FileWatcher watcher;
+    watcher.watch({scene, other});
+    EXPECT_TRUE(watcher.changedFiles().empty()) << "nothing changed yet";
+    write("scene.in", "changed and longer");
+    EXPECT_EQ(watcher.changedFiles(), std::vector<fs::path>{scene});
+    EXPECT_TRUE(watcher.changedFiles().empty()) << "a change is reported once";
+}
+
+TEST_F(FileWatcherTest, AFileThatDisappearsOrAppearsHasChanged)
+{
+    const fs::path scene = write("scene.in", "one");
+    app::FileWatcher watcher;
+    watcher.watch({scene, folder_ / "later.glsl"});
+    fs::remove(scene);
+    write("later.glsl", "new");
+    EXPECT_EQ(watcher.changedFiles().size(), 2u);
+}
+
+TEST_F(FileWatcherTest, AFileStillWatchedKeepsItsLastSeenStateAcrossWatch)
+{
+    const fs::path scene = write("scene.in", "one");
+    app::FileWatcher watcher;
+    watcher.watch({scene});
+    // Edited while the scene was being reloaded, before the new list is watched.
+    write("scene.in", "edited meanwhile");
+    watcher.watch({scene, write("texture.ppm", "x")});
+    EXPECT_EQ(watcher.changedFiles(), std::vector<fs::path>{scene});
+}
+
+TEST(SceneFiles, AreTheSceneItsUserSdfFilesAndItsTextures)
+{
+    const std::string text =
+        "0 1 4\n0 0 0\n0 1 0\n45\n0\n"
+        "2\ntexmap brick.ppm 1\nsolid 1 1 1\n1\n0 0 0  0 0 0 0\n"
+        "2\n0 0 twisted_bar 0 0.4 0\n1 0 sphere 0 0 0 1\n";
+    const std::vector<fs::path> files = app::filesOfScene("my.in", scene_tests::parse(text));
+    ASSERT_EQ(files.size(), 3u);
+    EXPECT_EQ(files[0], fs::path("my.in"));
+    EXPECT_EQ(files[1].filename(), "twisted_bar.glsl");
+    EXPECT_EQ(files[2].filename(), "brick.ppm");
+}
+
+TEST(SnapshotFiles, AreNamedAfterTheSceneAndTheSamplesInTheCurrentOrOutputFolder)
+{
+    const app::SnapshotFiles here = app::snapshotFiles("scenes/scene3.in", 120, std::nullopt);
+    EXPECT_EQ(here.picture, fs::path("scene3-120spp.png"));
+    EXPECT_EQ(here.radiance, fs::path("scene3-120spp.exr"));
+    const app::SnapshotFiles there =
+        app::snapshotFiles("scene3.in", 7, fs::path("renders/final.exr"));
+    EXPECT_EQ(there.picture, fs::path("renders/scene3-7spp.png"));
+    EXPECT_EQ(there.radiance, fs::path("renders/scene3-7spp.exr"));
+}
+
+TEST(FramePacing, SamplesPerFrameAimAtTheTargetTimeWithinOneToSixteen)
+{
+    EXPECT_EQ(app::samplesPerFrameFor(0.15, 0.03), 5);
+    EXPECT_EQ(app::samplesPerFrameFor(0.15, 1.0), 1);
+    EXPECT_EQ(app::samplesPerFrameFor(0.15, 1e-5), 16);
+    EXPECT_EQ(app::samplesPerFrameFor(0.15, 0.0), 16);
+}
+
+TEST(FramePacing, ThePreviewGridCoarsensWhenSlowAndRefinesWhenFast)
+{
+    EXPECT_EQ(app::nextPreviewDivisor(2, 0.2), 3);
+    EXPECT_EQ(app::nextPreviewDivisor(3, 0.01), 2);
+    EXPECT_EQ(app::nextPreviewDivisor(3, 0.05), 3) << "inside the band it stays";
+    EXPECT_EQ(app::nextPreviewDivisor(1, 0.001), 1);
+    EXPECT_EQ(app::nextPreviewDivisor(app::kMaxPreviewDivisor, 5.0), app::kMaxPreviewDivisor);
+}
+
+TEST(FramePacing, TheFirstPreviewGridFollowsTheCostOfAFullSample)
+{
+    EXPECT_EQ(app::firstPreviewDivisor(0.01), 1);
+    EXPECT_EQ(app::firstPreviewDivisor(0.04), 1);
+    EXPECT_EQ(app::firstPreviewDivisor(0.15), 2) << "0.15 / 4 = 0.0375";
+    EXPECT_EQ(app::firstPreviewDivisor(0.5), 4) << "0.5 / 9 > 0.04 >= 0.5 / 16";
+    EXPECT_EQ(app::firstPreviewDivisor(1000.0), app::kMaxPreviewDivisor);
+}
+
+TEST(ConvergenceHistory, KeepsPointsOneSpacingApart)
+{
+    app::ConvergenceHistory history;
+    history.add(0.0, 1.0f);
+    history.add(0.2, 0.9f);  // too soon
+    history.add(0.5, 0.8f);
+    history.add(0.99, 0.7f);
+    EXPECT_EQ(history.errors(), (std::vector<float>{1.0f, 0.8f, 0.7f}));
+}
+
+TEST(ConvergenceHistory, WhenFullHalvesItsPointsAndDoublesItsSpacingToSpanEverything)
+{
+    app::ConvergenceHistory history;
+    const std::size_t capacity = app::ConvergenceHistory::kCapacity;
+    const double spacing = app::ConvergenceHistory::kFirstSpacingSeconds;
+    for (std::size_t i = 0; i < capacity; ++i)
+        history.add(i * spacing, static_cast<float>(i));
+    ASSERT_EQ(history.errors().size(), capacity);
+    // Full: the points at even positions stay, the last of them at (capacity - 2) * spacing,
+    // and the new one is a doubled spacing after it.
+    history.add(capacity * spacing, -1.0f);
+    EXPECT_EQ(history.errors().size(), capacity / 2 + 1);
+    EXPECT_DOUBLE_EQ(history.spacingSeconds(), 2.0 * spacing);
+    EXPECT_EQ(history.errors()[1], 2.0f) << "every other point is kept";
+    EXPECT_EQ(history.errors().back(), -1.0f);
+    history.add((capacity + 1) * spacing, -2.0f);
+    EXPECT_EQ(history.errors().back(), -1.0f) << "one old spacing on is too soon now";
+    history.add((capacity + 2) * spacing, -3.0f);
+    EXPECT_EQ(history.errors().back(), -3.0f);
+}
+
+}  // namespace
+}  // namespace interaction_tests

@@ -1,0 +1,301 @@
+// The window as a user meets it, under a virtual X server (run-under-xvfb.sh): synthetic
+// mouse and key input through xdotool, and what the window shows read back from the X
+// server, its title and its pixels. Each test runs the program in its own folder on a scene
+// it writes there, and edits that scene as a user would (a new file renamed over the old,
+// as editors save).
+#include "io/ImageFile.h"
+#include "support/ChildProcess.h"
+#include "window/WindowDriver.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <future>
+#include <thread>
+#include <unistd.h>
+
+namespace window_tests {
+namespace {
+
+using namespace testing_support;
+namespace fs = std::filesystem;
+
+// A red sphere on a grey floor under a point light and the sky. `colour` is the sphere's
+// pigment (line 8); `extraObjects` follow the two objects (the count on line 12 follows).
+std::string sceneText(const std::string& colour, const std::string& extraObjects = "",
+                      int extraCount = 0, const std::string& sphereWord = "sphere")
+{
+    return "0 1.2 4\n"                               // 1 eye
+           "0 0.5 0\n"                               // 2 target
+           "0 1 0\n"                                 // 3 up
+           "45\n"                                    // 4 fovy
+           "1\n"                                     // 5 point lights
+           "2 5 3  40 40 40\n"                       // 6
+           "2\n"                                     // 7 pigments
+           "solid " + colour + "\n"                  // 8
+           "solid 0.5 0.5 0.5\n"                     // 9
+           "1\n"                                     // 10 finishes
+           "0 0 0  0 0 0 0\n"                        // 11
+           + std::to_string(2 + extraCount) + "\n"   // 12 objects
+           "0 0 " + sphereWord + " 0 0.5 0  0.5\n"   // 13
+           "1 0 polyhedron 1\n"                      // 14
+           "    0 1 0 0\n"                           // 15
+           + extraObjects;
+}
+
+const char* const kRed = "0.8 0.1 0.1";
+const char* const kBlue = "0.1 0.1 0.8";
+
+class InteractiveWindow : public ::testing::Test {
+protected:
+    void SetUp() override
+    {
+        ASSERT_NE(std::getenv("DISPLAY"), nullptr)
+            << "run this test through run-under-xvfb.sh, which provides a display";
+        folder_ = fs::temp_directory_path() /
+                  ("raytracer-interactive-" + std::to_string(::getpid()) + "-" +
+                   ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(folder_);
+        fs::create_directories(folder_);
+    }
+
+    void TearDown() override
+    {
+        if (program_.valid()) {
+            try {
+                pressKey(window_, "Escape");
+            } catch (const std::exception&) {
+            }
+            program_.wait();
+        }
+        fs::remove_all(folder_);
+    }
+
+    // Saves the scene file as an editor does: a new file renamed over the old one.
+    void writeScene(const std::string& text)
+    {
+        const fs::path temporary = folder_ / "scene.in.new";
+        std::ofstream(temporary) << text;
+        fs::rename(temporary, folder_ / "scene.in");
+    }
+
+    // Starts the program on folder/scene.in in a 160x120 window and waits for the window;
+    // with `hidePanel`, Tab hides the statistics panel, which would cover the picture.
+    void start(const std::vector<std::string>& options = {}, bool hidePanel = true)
+    {
+        std::vector<std::string> arguments = {RAYTRACER_EXECUTABLE, "scene.in", "160", "120"};
+        arguments.insert(arguments.end(), options.begin(), options.end());
+        ProcessOptions processOptions;
+        processOptions.workingDirectory = folder_;
+        processOptions.timeoutSeconds = 60.0;
+        program_ = std::async(std::launch::async, [arguments, processOptions] {
+            return runProcess(arguments, processOptions);
+        });
+        const std::optional<unsigned long> window = findWindow("raytracer", 20.0);
+        ASSERT_TRUE(window) << "no window appeared";
+        window_ = *window;
+        if (hidePanel)
+            pressKey(window_, "Tab");
+    }
+
+    // Waits until the title shows at least `samples` samples per pixel, and returns it.
+    std::string waitForSamples(int samples, double seconds = 20.0)
+    {
+        return waitForTitle(
+            window_,
+            [samples](const std::string& title) { return samplesInTitle(title) >= samples; },
+            seconds);
+    }
+
+    std::string waitForTitleWith(const std::string& part, double seconds = 20.0)
+    {
+        return waitForTitle(
+            window_,
+            [&part](const std::string& title) { return title.find(part) != std::string::npos; },
+            seconds);
+    }
+
+    // Closes the window with Escape and returns how the program ended.
+    ProcessResult close()
+    {
+        pressKey(window_, "Escape");
+        ProcessResult result = program_.get();
+        return result;
+    }
+
+    bool running() const
+    {
+        return program_.wait_for(std::chrono::seconds(0)) != std::future_status::ready;
+    }
+
+    fs::path folder_;
+    std::future<ProcessResult> program_;
+    unsigned long window_ = 0;
+};
+
+TEST_F(InteractiveWindow, DraggingTheMouseRestartsTheAccumulation)
+{
+    writeScene(sceneText(kRed));
+    start();
+    const std::string before = waitForSamples(60);
+    ASSERT_GE(samplesInTitle(before), 60) << "the render did not get going: " << before;
+    drag(window_, 1, 80, 60, 40, 10);
+    // The first title after the view stopped moving.
+    const std::string after = waitForTitle(
+        window_,
+        [](const std::string& title) {
+            return title.find("moving") == std::string::npos && samplesInTitle(title) >= 0;
+        },
+        10.0);
+    EXPECT_LT(samplesInTitle(after), samplesInTitle(before))
+        << "a left drag orbits the camera, so the accumulation must start again; before the "
+           "drag: \""
+        << before << "\", after: \"" << after << "\"";
+}
+
+TEST_F(InteractiveWindow, InputThatLeavesTheViewAloneKeepsTheAccumulation)
+{
+    writeScene(sceneText(kRed));
+    start();
+    const std::string before = waitForSamples(20);
+    ASSERT_GE(samplesInTitle(before), 20) << before;
+    // A mouse move without a button and the panel key change nothing of the view.
+    xdotool({"mousemove", "--window", std::to_string(window_), "20", "20"});
+    xdotool({"mousemove", "--window", std::to_string(window_), "120", "90"});
+    pressKey(window_, "Tab");
+    pressKey(window_, "Tab");
+    std::this_thread::sleep_for(std::chrono::milliseconds(600));
+    const std::string after = windowTitle(window_);
+    EXPECT_GT(samplesInTitle(after), samplesInTitle(before))
+        << "nothing changed the view, so the samples must go on adding up; before: \"" << before
+        << "\", after: \"" << after << "\"";
+}
+
+TEST_F(InteractiveWindow, CtrlSWritesPngAndExrNamedAfterTheSceneAndGoesOn)
+{
+    writeScene(sceneText(kRed));
+    start();
+    ASSERT_GE(samplesInTitle(waitForSamples(4)), 4);
+    pressKey(window_, "ctrl+s");
+    const std::string saved = waitForTitleWith("saved");
+    ASSERT_NE(saved.find("saved"), std::string::npos) << "the title never said it saved: " << saved;
+    const int samples = samplesInTitle(saved);
+    std::vector<fs::path> pictures;
+    std::vector<fs::path> radiance;
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder_)) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind("scene-", 0) == 0 && entry.path().extension() == ".png")
+            pictures.push_back(entry.path());
+        if (name.rfind("scene-", 0) == 0 && entry.path().extension() == ".exr")
+            radiance.push_back(entry.path());
+    }
+    ASSERT_EQ(pictures.size(), 1u) << "one PNG named scene-Nspp.png in the current folder";
+    ASSERT_EQ(radiance.size(), 1u) << "one EXR named scene-Nspp.exr in the current folder";
+    EXPECT_EQ(pictures[0].stem(), radiance[0].stem());
+    EXPECT_NE(saved.find(pictures[0].filename().string()), std::string::npos)
+        << "the title names the file written: " << saved;
+    const io::Image picture = io::readImage(pictures[0]);
+    const io::Image hdr = io::readImage(radiance[0]);
+    EXPECT_EQ(picture.width, 160);
+    EXPECT_EQ(picture.height, 120);
+    EXPECT_EQ(hdr.width, 160);
+    EXPECT_EQ(hdr.height, 120);
+    EXPECT_GT(meanColour(hdr).red, 0.0) << "the EXR holds the radiance";
+
+    const std::string later = waitForSamples(samples + 4);
+    EXPECT_GE(samplesInTitle(later), samples + 4) << "saving must not stop the render: " << later;
+    const ProcessResult result = close();
+    EXPECT_TRUE(result.exited && result.exitStatus == 0) << result.describeEnd();
+    EXPECT_NE(result.standardOutput.find(pictures[0].filename().string()), std::string::npos)
+        << "the terminal names the files written: " << result.standardOutput;
+}
+
+TEST_F(InteractiveWindow, EditingAColourChangesThePictureWithoutARecompile)
+{
+    writeScene(sceneText(kRed));
+    start();
+    ASSERT_GE(samplesInTitle(waitForSamples(16)), 16);
+    const ChannelMeans red = meanColour(captureWindow(window_));
+    writeScene(sceneText(kBlue));
+    const std::string reloaded = waitForTitleWith("reloaded");
+    EXPECT_NE(reloaded.find("values only"), std::string::npos)
+        << "a colour is a uniform: the reload must not rebuild the shader: " << reloaded;
+    EXPECT_EQ(reloaded.find("rebuilt"), std::string::npos) << reloaded;
+    // Samples of the new scene (the title's count restarted with the reload).
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    ASSERT_GE(samplesInTitle(waitForSamples(16)), 16);
+    const ChannelMeans blue = meanColour(captureWindow(window_));
+    EXPECT_LT(blue.red, red.red - 0.02) << "the sphere turned from red to blue";
+    EXPECT_GT(blue.blue, red.blue + 0.02) << "the sphere turned from red to blue";
+}
+
+TEST_F(InteractiveWindow, ASyntaxErrorKeepsTheWindowAndShowsWhere)
+{
+    writeScene(sceneText(kRed));
+    start();
+    ASSERT_GE(samplesInTitle(waitForSamples(8)), 8);
+    writeScene(sceneText(kRed, "", 0, "spherr"));
+    const std::string broken = waitForTitleWith("error");
+    EXPECT_NE(broken.find("scene.in:13"), std::string::npos)
+        << "the title names the file and line of the error: " << broken;
+    EXPECT_NE(broken.find("spherr"), std::string::npos) << broken;
+    // The last good scene goes on converging.
+    const std::string later = waitForSamples(samplesInTitle(broken) + 8);
+    EXPECT_GT(samplesInTitle(later), samplesInTitle(broken)) << later;
+    EXPECT_TRUE(running()) << "a broken edit must never end the program";
+    // Mended, it loads again.
+    writeScene(sceneText(kBlue));
+    const std::string mended = waitForTitleWith("reloaded");
+    EXPECT_NE(mended.find("reloaded"), std::string::npos) << mended;
+    const ProcessResult result = close();
+    EXPECT_TRUE(result.exited && result.exitStatus == 0) << result.describeEnd();
+    EXPECT_NE(result.standardError.find("scene.in:13"), std::string::npos)
+        << "the terminal shows the error too: " << result.standardError;
+}
+
+TEST_F(InteractiveWindow, AStructuralEditRebuildsTheShader)
+{
+    writeScene(sceneText(kRed));
+    start();
+    ASSERT_GE(samplesInTitle(waitForSamples(16)), 16);
+    const ChannelMeans before = meanColour(captureWindow(window_));
+    // A red box beside the sphere: a new kind of shape is new code.
+    writeScene(sceneText(kRed, "0 0 box 1.1 0.3 0.4  0.3 0.3 0.3\n", 1));
+    const std::string reloaded = waitForTitleWith("reloaded");
+    EXPECT_NE(reloaded.find("structure changed, shader rebuilt"), std::string::npos) << reloaded;
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    ASSERT_GE(samplesInTitle(waitForSamples(16)), 16);
+    const ChannelMeans after = meanColour(captureWindow(window_));
+    const double change = std::abs(after.red - before.red) + std::abs(after.green - before.green) +
+                          std::abs(after.blue - before.blue);
+    EXPECT_GT(change, 0.01) << "the box must appear in the picture";
+}
+
+TEST_F(InteractiveWindow, ResizingRendersAtTheNewSize)
+{
+    writeScene(sceneText(kRed));
+    start();
+    ASSERT_GE(samplesInTitle(waitForSamples(2)), 2);
+    xdotool({"windowsize", std::to_string(window_), "200", "100"});
+    const std::string resized = waitForTitleWith("200x100");
+    EXPECT_NE(resized.find("200x100"), std::string::npos)
+        << "the image is rendered at the window's new size, so its aspect stays right: "
+        << resized;
+}
+
+TEST_F(InteractiveWindow, ClosingBeforeTheSamplesAskedForIsAnInterruptedRender)
+{
+    writeScene(sceneText(kRed));
+    start({"--spp", "100000", "--output", "out.png"});
+    ASSERT_GE(samplesInTitle(waitForSamples(2)), 2);
+    const ProcessResult result = close();
+    EXPECT_TRUE(result.exited && result.exitStatus == 130)
+        << "like Ctrl-C: " << result.describeEnd() << "\n" << result.standardOutput;
+    EXPECT_NE(result.standardOutput.find("(interrupted)"), std::string::npos)
+        << result.standardOutput;
+    EXPECT_TRUE(fs::exists(folder_ / "out.png")) << "what was rendered is still written";
+}
+
+}  // namespace
+}  // namespace window_tests
