@@ -2,6 +2,8 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <pty.h>
+#include <sys/ioctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -65,8 +67,18 @@ ProcessResult runProcess(const std::vector<std::string>& arguments, const Proces
 
     int outputPipe[2];
     int errorPipe[2];
-    if (pipe(outputPipe) != 0 || pipe(errorPipe) != 0)
+    if (pipe(outputPipe) != 0)
         throw std::runtime_error("pipe failed");
+    if (options.terminalColumns) {
+        winsize size{};
+        size.ws_row = 24;
+        size.ws_col = static_cast<unsigned short>(*options.terminalColumns);
+        // errorPipe[0] is the terminal's master side, errorPipe[1] the child's.
+        if (openpty(&errorPipe[0], &errorPipe[1], nullptr, nullptr, &size) != 0)
+            throw std::runtime_error("openpty failed");
+    } else if (pipe(errorPipe) != 0) {
+        throw std::runtime_error("pipe failed");
+    }
 
     const auto start = std::chrono::steady_clock::now();
     const pid_t pid = fork();
@@ -112,9 +124,16 @@ ProcessResult runProcess(const std::vector<std::string>& arguments, const Proces
             if (streams[i].fd < 0 || streams[i].revents == 0)
                 continue;
             char buffer[4096];
+            // A terminal's master side reads EIO once the child's side is closed: the end.
             const ssize_t count = read(streams[i].fd, buffer, sizeof buffer);
             if (count > 0) {
                 sinks[i]->append(buffer, static_cast<std::size_t>(count));
+                if (options.signalWhenErrorShows && !signalled && i == 1 &&
+                    result.standardError.find(*options.signalWhenErrorShows) !=
+                        std::string::npos) {
+                    kill(pid, options.signal);
+                    signalled = true;
+                }
             } else {
                 close(streams[i].fd);
                 streams[i].fd = -1;
