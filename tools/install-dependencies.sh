@@ -8,7 +8,7 @@ packages=(
   libglfw3-dev libglew-dev libglm-dev libosmesa6-dev
   libopenimageio-dev openimageio-tools
   libgtest-dev
-  xvfb xauth
+  xvfb xauth xdotool
   python3 python3-numpy
   "$@"
 )

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <unistd.h>
 
 namespace io {
 
@@ -128,6 +129,10 @@ void writeImage(const fs::path& path, const Image& image,
 
 void checkReadableImage(const fs::path& path)
 {
+    // OpenImageIO says only that it could not open the file; the system says why.
+    if (::access(path.c_str(), R_OK) != 0)
+        throw std::runtime_error("cannot read image " + path.string() + ": " +
+                                 std::strerror(errno));
     auto input = OIIO::ImageInput::open(path.string());
     if (!input)
         throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());

@@ -18,6 +18,12 @@ namespace {
 using namespace testing_support;
 namespace fs = std::filesystem;
 
+std::string describe(const ProcessResult& result)
+{
+    return result.describeEnd() + "\n--- stdout:\n" + result.standardOutput + "--- stderr:\n" +
+           result.standardError;
+}
+
 class Outputs : public ProgramInFolder {
 protected:
     std::string scene1() const { return (sourceDirectory() / "scenes" / "scene1.in").string(); }
@@ -29,13 +35,17 @@ protected:
         text << file.rdbuf();
         return text.str();
     }
-};
 
-std::string describe(const ProcessResult& result)
-{
-    return result.describeEnd() + "\n--- stdout:\n" + result.standardOutput + "--- stderr:\n" +
-           result.standardError;
-}
+    // An interrupt before the first sample: status 130, soon, and out.exr as it was.
+    void expectInterruptedWithTheOlderFileKept(const ProcessResult& result) const
+    {
+        ASSERT_TRUE(result.exited) << describe(result);
+        EXPECT_EQ(result.exitStatus, 130) << describe(result);
+        EXPECT_LT(result.seconds, 30.0) << "the render should stop soon after the interrupt";
+        EXPECT_EQ(contents("out.exr"), "an earlier render") << "the older file must be kept";
+        EXPECT_EQ(filesInFolder(), std::vector<std::string>{"out.exr"}) << "nothing else written";
+    }
+};
 
 // --- checked before the render ------------------------------------------------------------
 
@@ -158,19 +168,15 @@ TEST_F(Outputs, OutputAndStatisticsNamingOneFileThroughALinkedFolderAreRefused)
 TEST_F(Outputs, InterruptBeforeTheFirstSampleWritesNothingAndKeepsTheOlderFile)
 {
     write("out.exr", "an earlier render");
-    // One frame of 64 paths per pixel at 640x480 takes far longer than the 2 seconds after
-    // which the signal comes, whether it comes during set-up or during that first frame.
+    // Sent at once, and held pending until the program watches for it: the interrupt comes
+    // before the scene is even read.
     ProcessOptions options;
-    options.signalAfterSeconds = 2.0;
+    options.signalAfterSeconds = 0.0;
+    options.startWithSignalBlocked = true;
     options.signal = SIGINT;
-    const ProcessResult result = run({scene1(), "640", "480", "--spp", "64",
-                                      "--samples-per-frame", "64", "--output", "out.exr"},
-                                     options);
-    ASSERT_TRUE(result.exited) << describe(result);
-    EXPECT_EQ(result.exitStatus, 130) << describe(result);
-    EXPECT_LT(result.seconds, 30.0) << "the render should stop soon after the interrupt";
-    EXPECT_EQ(contents("out.exr"), "an earlier render") << "the older file must be kept";
-    EXPECT_EQ(filesInFolder(), std::vector<std::string>{"out.exr"}) << "nothing else written";
+    const ProcessResult result =
+        run({scene1(), "64", "48", "--spp", "64", "--output", "out.exr"}, options);
+    expectInterruptedWithTheOlderFileKept(result);
     const auto lines = nonEmptyLines(result.standardOutput);
     ASSERT_FALSE(lines.empty()) << describe(result);
     EXPECT_NE(lines.back().find("nothing written"), std::string::npos) << lines.back();
@@ -198,6 +204,21 @@ TEST_F(Outputs, ACompleteRenderIsNotMarkedAsInterrupted)
     const ProcessResult result = run({scene1(), "8", "8", "--spp", "2", "--output", "c.exr"});
     ASSERT_TRUE(result.exited && result.exitStatus == 0) << describe(result);
     EXPECT_FALSE(io::readImageAttribute(folder_ / "c.exr", "raytracer:interrupted").has_value());
+}
+
+TEST_F(Outputs, InterruptDuringALongFirstFrameStopsItAndWritesNothing)
+{
+    write("out.exr", "an earlier render");
+    // One frame of 64 paths per pixel at 1280x960 takes minutes on a software rasteriser; the
+    // render must stop within a band of it, not at its end.
+    ProcessOptions options;
+    options.signalAfterSeconds = 4.0;
+    options.startWithSignalBlocked = true;
+    options.signal = SIGINT;
+    const ProcessResult result = run({scene1(), "1280", "960", "--spp", "64",
+                                      "--samples-per-frame", "64", "--output", "out.exr"},
+                                     options);
+    expectInterruptedWithTheOlderFileKept(result);
 }
 
 TEST_F(Outputs, ATimedRenderTooShortForOneSampleWritesNothingAndSaysSo)

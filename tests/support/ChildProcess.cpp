@@ -95,6 +95,12 @@ ProcessResult runProcess(const std::vector<std::string>& arguments, const Proces
         close(errorPipe[1]);
         if (chdir(directory.c_str()) != 0)
             _exit(126);
+        if (options.startWithSignalBlocked) {
+            sigset_t blocked;
+            sigemptyset(&blocked);
+            sigaddset(&blocked, options.signal);
+            sigprocmask(SIG_BLOCK, &blocked, nullptr);
+        }
         execve(argv[0], argv.data(), envp.data());
         _exit(127);
     }

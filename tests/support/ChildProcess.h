@@ -20,6 +20,10 @@ struct ProcessOptions {
     // line says a frame is done).
     std::optional<std::string> signalWhenErrorShows;
     int signal = SIGINT;
+    // The child starts with `signal` blocked: one sent before the program is ready stays
+    // pending until the program unblocks it (InterruptWatch does, once its handler is set),
+    // so "an interrupt at the very start" is exact rather than a race with its start-up.
+    bool startWithSignalBlocked = false;
     // Killed (SIGKILL) after this long; the result then says so.
     double timeoutSeconds = 100.0;
     // Standard error on a pseudo-terminal this many columns wide (0: a terminal that does

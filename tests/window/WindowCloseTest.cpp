@@ -17,8 +17,8 @@ namespace {
 using namespace testing_support;
 namespace fs = std::filesystem;
 
-// Presses Escape in the program's window as soon as it has one (xdotool, through the X
-// server's XTEST extension, as a keyboard would).
+// Presses Escape in the program's window (xdotool, as a keyboard would) as soon as its title
+// shows a first sample done: "raytracer - scene3.in - 1 spp, ...".
 void pressEscapeInTheWindowWhenItOpens(const fs::path& folder)
 {
     ProcessOptions options;
@@ -28,12 +28,11 @@ void pressEscapeInTheWindowWhenItOpens(const fs::path& folder)
     while (std::chrono::steady_clock::now() - start < std::chrono::seconds(60)) {
         const ProcessResult found =
             runProcess({"/bin/sh", "-c",
-                        "xdotool search --name '^raytracer - ' | head -n 1"}, options);
+                        "xdotool search --name '^raytracer - .* [1-9][0-9]* spp' | head -n 1"},
+                       options);
         const std::string window = found.standardOutput.substr(
             0, found.standardOutput.find_first_of("\r\n"));
         if (!window.empty()) {
-            // Give the first frames a moment, as a person would.
-            std::this_thread::sleep_for(std::chrono::milliseconds(1500));
             runProcess({"/bin/sh", "-c",
                         "xdotool windowfocus --sync " + window + " mousemove --window " +
                             window + " 8 8 key Escape"},
