@@ -192,7 +192,7 @@ std::string outputFormatsHelp()
         for (const std::string& extension : format.extensions)
             names += (names.empty() ? "" : " ") + extension;
         names.resize(std::max<std::size_t>(names.size() + 2, 12), ' ');
-        text += "                          " + names + format.holds + "\n";
+        text += "                        " + names + format.holds + "\n";
     }
     return text;
 }

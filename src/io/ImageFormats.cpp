@@ -14,8 +14,7 @@ const std::vector<ImageFormat>& outputFormats()
         {{".tif", ".tiff"}, false, false, "the tone-mapped picture, 8-bit (TIFF)"},
         {{".exr"}, true, true, "linear HDR radiance, 32-bit float (OpenEXR)"},
         {{".pfm"}, true, true, "linear HDR radiance, 32-bit float (portable float map)"},
-        {{".hdr"}, true, false,
-         "linear HDR radiance, Radiance RGBE (8-bit mantissas sharing an exponent)"},
+        {{".hdr"}, true, false, "linear HDR radiance, Radiance RGBE (about 1% precision)"},
     };
     return formats;
 }
