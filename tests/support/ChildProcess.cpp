@@ -80,10 +80,22 @@ ProcessResult runProcess(const std::vector<std::string>& arguments, const Proces
         throw std::runtime_error("pipe failed");
     }
 
+    // Blocked before fork, so that the child has it blocked from its first instruction (a
+    // signal sent at once cannot come before); the parent restores its own mask after.
+    sigset_t parentMask;
+    if (options.startWithSignalBlocked) {
+        sigset_t blocked;
+        sigemptyset(&blocked);
+        sigaddset(&blocked, options.signal);
+        sigprocmask(SIG_BLOCK, &blocked, &parentMask);
+    }
     const auto start = std::chrono::steady_clock::now();
     const pid_t pid = fork();
-    if (pid < 0)
+    if (pid < 0) {
+        if (options.startWithSignalBlocked)
+            sigprocmask(SIG_SETMASK, &parentMask, nullptr);
         throw std::runtime_error("fork failed");
+    }
     if (pid == 0) {
         const int nullInput = open("/dev/null", O_RDONLY);
         dup2(nullInput, STDIN_FILENO);
@@ -95,15 +107,12 @@ ProcessResult runProcess(const std::vector<std::string>& arguments, const Proces
         close(errorPipe[1]);
         if (chdir(directory.c_str()) != 0)
             _exit(126);
-        if (options.startWithSignalBlocked) {
-            sigset_t blocked;
-            sigemptyset(&blocked);
-            sigaddset(&blocked, options.signal);
-            sigprocmask(SIG_BLOCK, &blocked, nullptr);
-        }
+
         execve(argv[0], argv.data(), envp.data());
         _exit(127);
     }
+    if (options.startWithSignalBlocked)
+        sigprocmask(SIG_SETMASK, &parentMask, nullptr);
     close(outputPipe[1]);
     close(errorPipe[1]);
 
