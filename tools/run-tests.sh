@@ -2,6 +2,9 @@
 # The README's second command (and CI's, through .ci/run): installs what is missing, builds,
 # and runs every test through ctest.
 #   tools/run-tests.sh [extra ctest arguments]
+# Then the GL-free tests (label unit: the scene parser and model, the output files, the shader
+# generator, the fuzz corpus replay) again in an AddressSanitizer + UndefinedBehaviorSanitizer
+# build in build-sanitize/ (the "sanitize" preset); RAYTRACER_SKIP_SANITIZER=1 skips it.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/tools/install-dependencies.sh"
@@ -15,3 +18,11 @@ elif ! command -v xdotool >/dev/null 2>&1; then
     echo "run-tests: xdotool is not installed (Debian package xdotool): the interactive window tests will be reported as skipped"
 fi
 ctest --output-on-failure --parallel 2 "$@"
+
+if [ "${RAYTRACER_SKIP_SANITIZER:-0}" != 1 ]; then
+    echo "run-tests: the GL-free tests again under AddressSanitizer and UndefinedBehaviorSanitizer (build-sanitize/)"
+    cd "$root"
+    cmake --preset sanitize >/dev/null
+    cmake --build build-sanitize --parallel --target scene_tests io_tests generator_tests scene_fuzz_replay
+    ctest --preset sanitize
+fi

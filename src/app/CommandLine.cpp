@@ -1,8 +1,12 @@
 #include "app/CommandLine.h"
 
+#include "io/ImageFormats.h"
+
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <set>
 #include <vector>
 
 namespace app {
@@ -66,8 +70,11 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
 {
     CommandLine line;
     std::vector<std::string> positional;
+    // Each option once: a repeated one is more likely a mistake than a wish for the last.
+    std::set<std::string> optionsGiven;
     for (int i = 1; i < argc; ++i) {
         const std::string argument = argv[i];
+        const std::size_t positionalBefore = positional.size();
         auto value = [&](const std::string& option) -> std::string {
             if (i + 1 >= argc)
                 throw UsageError(option + " needs a value");
@@ -159,6 +166,12 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
         } else {
             positional.push_back(argument);
         }
+        if (positional.size() == positionalBefore) {
+            const std::string option =
+                argument == "-o" ? "--output" : argument == "-h" ? "--help" : argument;
+            if (!optionsGiven.insert(option).second)
+                throw UsageError(option + " is given twice: give each option once");
+        }
     }
 
     if (line.action == Action::Help || line.action == Action::Version)
@@ -179,6 +192,24 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
     return line;
 }
 
+namespace {
+
+// The --output paragraph of --help, from the table of formats.
+std::string outputFormatsHelp()
+{
+    std::string text = "  --output FILE         where to write; the extension names the format:\n";
+    for (const io::ImageFormat& format : io::outputFormats()) {
+        std::string names;
+        for (const std::string& extension : format.extensions)
+            names += (names.empty() ? "" : " ") + extension;
+        names.resize(std::max<std::size_t>(names.size() + 2, 12), ' ');
+        text += "                        " + names + format.holds + "\n";
+    }
+    return text;
+}
+
+}  // namespace
+
 std::string usageText()
 {
     return R"(usage: raytracer SCENE [WIDTH HEIGHT] [SECONDS] [options]
@@ -187,14 +218,16 @@ Renders SCENE (a .in scene file) by path tracing on the GPU, WIDTH x HEIGHT pixe
 (default 640 480). Without SECONDS or --spp a window shows the image converging until it
 is closed (Escape closes it; its panel, Tab, lists the keys and mouse actions). With SECONDS the render runs that long, then writes the
 tone-mapped image as SCENE-NAME.ppm in the current folder (or --output). Without a display,
-or with --headless, rendering uses OSMesa and opens no window.
+or with --headless, rendering uses OSMesa and opens no window. Each option may be given
+once.
 
 output:
   --spp N               stop after exactly N samples per pixel (deterministic for a seed)
-  --output FILE         where to write: .ppm or .png hold the tone-mapped picture,
-                        .exr or .pfm the linear HDR radiance
-  --stats-output FILE   also write per-pixel statistics (.exr): samples, discarded samples,
-                        variance of the mean
+)"
+           + outputFormatsHelp() + R"(  --stats-output FILE   also write per-pixel statistics (.exr or .pfm): samples, discarded
+                        samples, variance of the mean. The image and the statistics are
+                        written together or not at all; an interrupted render marks them
+                        (attribute raytracer:interrupted, where the format holds attributes)
   --headless            render with OSMesa even when a display is available
   --seed N              random seed (default 1)
   --samples-per-frame N paths per pixel per frame (default: chosen so that a frame takes

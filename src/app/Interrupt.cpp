@@ -27,6 +27,13 @@ InterruptWatch::InterruptWatch()
     interruptRequested = 0;
     std::signal(SIGINT, onInterrupt);
     std::signal(SIGTERM, onInterrupt);
+    // A program started with these blocked (by its parent, inherited through exec) would
+    // never see them; one sent before now is delivered here, to the handler.
+    sigset_t signals;
+    sigemptyset(&signals);
+    sigaddset(&signals, SIGINT);
+    sigaddset(&signals, SIGTERM);
+    sigprocmask(SIG_UNBLOCK, &signals, nullptr);
 }
 
 InterruptWatch::~InterruptWatch()

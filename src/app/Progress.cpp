@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 namespace app {
@@ -22,6 +24,49 @@ double Progress::elapsedSeconds() const
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
+namespace {
+
+// The terminal's width in columns, or 0 where it does not say.
+int terminalColumns()
+{
+    winsize size{};
+    if (::ioctl(STDERR_FILENO, TIOCGWINSZ, &size) != 0)
+        return 0;
+    return size.ws_col;
+}
+
+// The widest form of the line that fits `columns` (less one: writing the last column makes
+// some terminals wrap); the short form where the width is unknown. Nothing is wider than the
+// terminal, so each redraw overwrites the last instead of leaving a trail of cut lines.
+std::string progressLine(int samples, double rate, double elapsed, double remaining,
+                         int columns)
+{
+    char forms[4][160];
+    const bool ends = remaining >= 0.0;
+    if (ends)
+        std::snprintf(forms[0], sizeof forms[0],
+                      "%6d spp  %7.2f spp/s  %7.1f s elapsed  %7.1f s left", samples, rate,
+                      elapsed, remaining);
+    else
+        std::snprintf(forms[0], sizeof forms[0], "%6d spp  %7.2f spp/s  %7.1f s elapsed",
+                      samples, rate, elapsed);
+    std::snprintf(forms[1], sizeof forms[1], ends ? "%d spp  %.2f spp/s  %.0f s left"
+                                                  : "%d spp  %.2f spp/s  %.0f s",
+                  samples, rate, ends ? remaining : elapsed);
+    std::snprintf(forms[2], sizeof forms[2], ends ? "%d spp, %.0f s left" : "%d spp, %.0f s",
+                  samples, ends ? remaining : elapsed);
+    std::snprintf(forms[3], sizeof forms[3], "%d spp", samples);
+    if (columns <= 0)
+        return forms[2];
+    const std::size_t room = static_cast<std::size_t>(columns - 1);
+    for (const char* form : forms)
+        if (std::strlen(form) <= room)
+            return form;
+    return std::string(forms[3]).substr(0, room);
+}
+
+}  // namespace
+
 void Progress::update(int samples)
 {
     if (!enabled_)
@@ -35,14 +80,9 @@ void Progress::update(int samples)
         const double bySamples = (*samplesPerPixel_ - samples) / rate;
         remaining = remaining < 0.0 ? bySamples : std::min(remaining, bySamples);
     }
-    char line[160];
-    if (remaining >= 0.0)
-        std::snprintf(line, sizeof line, "\r%6d spp  %7.2f spp/s  %7.1f s elapsed  %7.1f s left ",
-                      samples, rate, elapsed, remaining);
-    else
-        std::snprintf(line, sizeof line, "\r%6d spp  %7.2f spp/s  %7.1f s elapsed ", samples,
-                      rate, elapsed);
-    std::fputs(line, stderr);
+    // Asked every time: the terminal may have been resized.
+    const std::string line = progressLine(samples, rate, elapsed, remaining, terminalColumns());
+    std::fputs(("\r" + line + "\033[K").c_str(), stderr);
     std::fflush(stderr);
     drawn_ = true;
 }

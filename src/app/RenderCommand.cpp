@@ -6,6 +6,7 @@
 #include "app/Progress.h"
 #include "app/SceneLoading.h"
 #include "io/ImageFile.h"
+#include "io/OutputFiles.h"
 #include "platform/ContextFactory.h"
 #include "platform/GlfwWindowContext.h"
 #include "render/PathTracerProgram.h"
@@ -29,16 +30,47 @@ double secondsSince(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The files the run will write, checked before the scene is rendered.
+std::vector<io::OutputRequest> outputRequests(const CommandLine& line)
+{
+    std::vector<io::OutputRequest> outputs = {{line.outputPath(), io::OutputKind::Image}};
+    if (line.statisticsOutput)
+        outputs.push_back({*line.statisticsOutput, io::OutputKind::Statistics});
+    return outputs;
+}
+
+// Both images, or neither (io/OutputFiles.h).
 void writeOutputs(const CommandLine& line, const render::ProgressiveRenderer& renderer,
-                  const io::Image* windowPicture)
+                  const io::Image* windowPicture,
+                  const std::vector<io::ImageAttribute>& attributes)
 {
     const std::filesystem::path path = line.outputPath();
-    if (io::holdsLinearRadiance(path))
-        io::writeImage(path, renderer.radiance());
+    const io::Image picture = io::holdsLinearRadiance(path) ? renderer.radiance()
+                              : windowPicture != nullptr   ? *windowPicture
+                                                           : renderer.toneMapped();
+    std::vector<io::OutputImage> images = {{path, &picture, attributes}};
+    io::Image statistics;
+    if (line.statisticsOutput) {
+        statistics = renderer.sampleStatistics();
+        images.push_back({*line.statisticsOutput, &statistics, attributes});
+    }
+    io::writeAllOrNothing(images);
+}
+
+// What an interrupted file says of itself (attribute raytracer:interrupted).
+std::string interruptionNote(const CommandLine& line, int samples, double seconds)
+{
+    char text[160];
+    if (line.samplesPerPixel)
+        std::snprintf(text, sizeof text, "stopped at %d of %d samples per pixel", samples,
+                      *line.samplesPerPixel);
+    else if (line.seconds)
+        std::snprintf(text, sizeof text,
+                      "stopped after %.2f of %g seconds, at %d samples per pixel", seconds,
+                      *line.seconds, samples);
     else
-        io::writeImage(path, windowPicture != nullptr ? *windowPicture : renderer.toneMapped());
-    if (line.statisticsOutput)
-        io::writeImage(*line.statisticsOutput, renderer.sampleStatistics());
+        std::snprintf(text, sizeof text, "stopped at %d samples per pixel", samples);
+    return text;
 }
 
 }  // namespace
@@ -47,14 +79,15 @@ int runRender(const CommandLine& line)
 {
     // From the start: Ctrl-C while the shader compiles must not kill the program unseen.
     InterruptWatch interrupt;
+    if (line.statisticsOutput && io::resolveToSameFile(line.outputPath(), *line.statisticsOutput))
+        throw UsageError("--stats-output " + line.statisticsOutput->string() + " names the same "
+                         "file as the image, " + line.outputPath().string() +
+                         ": give two different files");
     // Every texture must be readable before a window opens or a frame is rendered.
     const scene::Scene scene = loadScene(line.scene);
     const bool writesFile = line.isBatch() || line.output.has_value();
-    if (writesFile) {
-        io::checkWritableFormat(line.outputPath());
-        if (line.statisticsOutput)
-            io::checkWritableFormat(*line.statisticsOutput);
-    }
+    if (writesFile)
+        io::checkOutputsCanBeWritten(outputRequests(line));
     const bool headless = line.headless || !platform::displayAvailable();
     if (headless && !line.isBatch())
         throw UsageError(std::string(line.headless ? "--headless" : "there is no display, so") +
@@ -113,7 +146,33 @@ int runRender(const CommandLine& line)
         renderSeconds = secondsSince(renderStart);
         progress.finish();
     }
+    // A render with an end (SECONDS or --spp) stopped before it by Ctrl-C or by closing its
+    // window is interrupted; a window without an end is meant to be closed.
     const bool interrupted = interrupt.requested() || endedEarly;
+    std::string summary = Progress::summary(renderer.width(), renderer.height(),
+                                            renderer.samplesPerPixel(), renderSeconds,
+                                            renderer.discardedSamples());
+    char setup[64];
+    std::snprintf(setup, sizeof setup, " (setup %.2f s)", setupSeconds);
+    summary += setup;
+
+    // An image without a sample is all black: never written, and never over an older file.
+    if (writesFile && renderer.samplesPerPixel() == 0) {
+        if (!interrupted) {
+            char reason[160];
+            std::snprintf(reason, sizeof reason,
+                          "the render's %.3g s ended before its first sample was complete: "
+                          "nothing written (give more SECONDS)",
+                          renderSeconds);
+            throw std::runtime_error(reason);
+        }
+        std::error_code error;
+        const bool older = std::filesystem::exists(line.outputPath(), error);
+        std::cout << summary << " (interrupted before the first sample: nothing written"
+                  << (older ? ", " + line.outputPath().string() + " left as it was" : "")
+                  << ")" << std::endl;
+        return kExitInterrupted;
+    }
 
     if (writesFile) {
         io::Image windowPicture;
@@ -128,17 +187,17 @@ int runRender(const CommandLine& line)
                 fromWindow = true;
             }
         }
-        writeOutputs(line, renderer, fromWindow ? &windowPicture : nullptr);
+        std::vector<io::ImageAttribute> attributes;
+        if (interrupted)
+            attributes.push_back({"raytracer:interrupted",
+                                  interruptionNote(line, renderer.samplesPerPixel(),
+                                                   renderSeconds)});
+        writeOutputs(line, renderer, fromWindow ? &windowPicture : nullptr, attributes);
+        summary += " -> " + line.outputPath().string();
+        if (line.statisticsOutput)
+            summary += " and " + line.statisticsOutput->string();
     }
 
-    std::string summary = Progress::summary(renderer.width(), renderer.height(),
-                                            renderer.samplesPerPixel(), renderSeconds,
-                                            renderer.discardedSamples());
-    char setup[64];
-    std::snprintf(setup, sizeof setup, " (setup %.2f s)", setupSeconds);
-    summary += setup;
-    if (writesFile)
-        summary += " -> " + line.outputPath().string();
     if (interrupted)
         summary += " (interrupted)";
     std::cout << summary << std::endl;

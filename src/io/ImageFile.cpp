@@ -1,15 +1,18 @@
 #include "io/ImageFile.h"
 
+#include "io/ImageFormats.h"
+#include "io/OutputFiles.h"
+
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <stdexcept>
 #include <string>
-#include <system_error>
 #include <unistd.h>
 
 namespace io {
@@ -31,17 +34,30 @@ bool isPfm(const fs::path& path)
     return lowerExtension(path) == ".pfm";
 }
 
+// Messages name the user's path: a library's message about the temporary file is rewritten.
+std::string aboutDestination(std::string message, const fs::path& file,
+                             const fs::path& destination)
+{
+    const std::string from = file.string();
+    for (std::size_t at; !from.empty() && (at = message.find(from)) != std::string::npos;)
+        message.replace(at, from.size(), destination.string());
+    return message;
+}
+
 // OpenImageIO 2.4 (Debian 12) reads PFM but has no writer for it, so PFM is written here:
 // "PF" (colour) or "Pf" (grey), size, a negative scale for little-endian floats, then the
-// rows bottom first.
-void writePfm(const fs::path& path, const Image& image)
+// rows bottom first. The format holds no attributes.
+void writePfm(const fs::path& file, const fs::path& destination, const Image& image)
 {
     if (image.channels != 3 && image.channels != 1)
-        throw std::runtime_error("cannot write " + path.string() +
+        throw std::runtime_error("cannot write " + destination.string() +
                                  ": PFM holds one or three channels");
-    std::ofstream file(path, std::ios::binary);
-    file << (image.channels == 3 ? "PF" : "Pf") << "\n"
-         << image.width << " " << image.height << "\n-1.0\n";
+    std::ofstream out(file, std::ios::binary);
+    if (!out)
+        throw std::runtime_error("cannot write " + destination.string() + ": " +
+                                 std::strerror(errno));
+    out << (image.channels == 3 ? "PF" : "Pf") << "\n"
+        << image.width << " " << image.height << "\n-1.0\n";
     for (int y = image.height - 1; y >= 0; --y) {
         const float* row = &image.pixels[image.index(0, y, 0)];
         for (int i = 0; i < image.width * image.channels; ++i) {
@@ -50,77 +66,88 @@ void writePfm(const fs::path& path, const Image& image)
             const unsigned char bytes[4] = {
                 static_cast<unsigned char>(bits), static_cast<unsigned char>(bits >> 8),
                 static_cast<unsigned char>(bits >> 16), static_cast<unsigned char>(bits >> 24)};
-            file.write(reinterpret_cast<const char*>(bytes), 4);
+            out.write(reinterpret_cast<const char*>(bytes), 4);
         }
     }
-    if (!file.flush())
-        throw std::runtime_error("cannot write " + path.string());
+    out.close();
+    if (!out)
+        throw std::runtime_error("cannot write " + destination.string() + ": " +
+                                 std::strerror(errno));
 }
 
-void writeThroughOpenImageIo(const fs::path& path, const fs::path& temporary, const Image& image)
+void writeThroughOpenImageIo(const fs::path& file, const fs::path& destination,
+                             const ImageFormat& format, const Image& image,
+                             const std::vector<ImageAttribute>& attributes)
 {
-    checkWritableFormat(path);
-    auto output = OIIO::ImageOutput::create(path.string());
-    const bool linear = holdsLinearRadiance(path);
+    // The writer is chosen by the destination's extension, whatever the file is called.
+    auto output = OIIO::ImageOutput::create(destination.string());
+    if (!output)
+        throw std::runtime_error("cannot write " + destination.string() +
+                                 ": OpenImageIO has no writer for this format");
     OIIO::ImageSpec spec(image.width, image.height, image.channels,
-                         linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-    if (!output->open(temporary.string(), spec)) {
-        throw std::runtime_error("cannot write " + path.string() + ": " + output->geterror());
-    }
+                         format.linearRadiance ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    for (const ImageAttribute& attribute : attributes)
+        spec.attribute(attribute.name, attribute.value);
+    if (!output->open(file.string(), spec))
+        throw std::runtime_error("cannot write " + destination.string() + ": " +
+                                 aboutDestination(output->geterror(), file, destination));
     const bool written = output->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
     const std::string writeError = written ? std::string() : output->geterror();
     const bool closed = output->close();
-    if (!written || !closed) {
-        std::error_code ignored;
-        fs::remove(temporary, ignored);
-        throw std::runtime_error("cannot write " + path.string() + ": " +
-                                 (written ? output->geterror() : writeError));
-    }
+    if (!written || !closed)
+        throw std::runtime_error(
+            "cannot write " + destination.string() + ": " +
+            aboutDestination(written ? output->geterror() : writeError, file, destination));
 }
 
 }  // namespace
 
 bool holdsLinearRadiance(const fs::path& path)
 {
-    const std::string extension = lowerExtension(path);
-    return extension == ".exr" || extension == ".pfm" || extension == ".hdr";
+    const ImageFormat* format = outputFormatOf(path);
+    return format != nullptr && format->linearRadiance;
 }
 
-void writeImage(const fs::path& path, const Image& image)
+void writeImageFile(const fs::path& file, const fs::path& destination, const Image& image,
+                    const std::vector<ImageAttribute>& attributes)
 {
-    // Same folder (so the rename cannot cross file systems), same extension (OpenImageIO
-    // picks the format from it).
-    const fs::path temporary =
-        path.parent_path() / ("." + path.stem().string() + ".partial-" +
-                              std::to_string(::getpid()) + path.extension().string());
-    if (isPfm(path)) {
-        writePfm(temporary, image);
-    } else {
-        writeThroughOpenImageIo(path, temporary, image);
-    }
-    std::error_code error;
-    fs::rename(temporary, path, error);
-    if (error) {
-        fs::remove(temporary, error);
-        throw std::runtime_error("cannot write " + path.string() + ": " + error.message());
-    }
+    const ImageFormat* format = outputFormatOf(destination);
+    if (format == nullptr)
+        throw std::runtime_error("cannot write " + destination.string() +
+                                 ": unknown image format");
+    if (isPfm(destination))
+        writePfm(file, destination, image);
+    else
+        writeThroughOpenImageIo(file, destination, *format, image, attributes);
 }
 
-void checkWritableFormat(const fs::path& path)
+void writeImage(const fs::path& path, const Image& image,
+                const std::vector<ImageAttribute>& attributes)
 {
-    if (isPfm(path))
-        return;
-    if (!OIIO::ImageOutput::create(path.string()))
-        throw std::runtime_error("cannot write " + path.string() +
-                                 ": unknown image format (use .ppm, .png, .exr or .pfm)");
+    writeAllOrNothing({{path, &image, attributes}});
 }
 
 void checkReadableImage(const fs::path& path)
 {
+    // OpenImageIO says only that it could not open the file; the system says why.
+    if (::access(path.c_str(), R_OK) != 0)
+        throw std::runtime_error("cannot read image " + path.string() + ": " +
+                                 std::strerror(errno));
     auto input = OIIO::ImageInput::open(path.string());
     if (!input)
         throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());
     input->close();
+}
+
+std::optional<std::string> readImageAttribute(const fs::path& path, const std::string& name)
+{
+    auto input = OIIO::ImageInput::open(path.string());
+    if (!input)
+        throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());
+    const OIIO::ParamValue* value = input->spec().find_attribute(name);
+    if (value == nullptr)
+        return std::nullopt;
+    return input->spec().get_string_attribute(name);
 }
 
 Image readImage(const fs::path& path)

@@ -2,24 +2,42 @@
 #include "io/Image.h"
 
 #include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace io {
+
+// A metadata attribute written into the image file's header where its format holds named
+// attributes (EXR, PNG; PPM, PFM and TIFF drop them). Text for now; typed values can join it.
+struct ImageAttribute {
+    std::string name;
+    std::string value;
+};
 
 // True for files that hold linear radiance (.exr, .pfm, .hdr); the rest hold pictures.
 bool holdsLinearRadiance(const std::filesystem::path& path);
 
-// Writes `image` through OpenImageIO in the format the extension names. Values are written
-// as given: linear radiance for HDR formats, display values in [0, 1] for the others (8-bit).
-// The file appears complete or not at all: it is written under a temporary name in the same
-// folder and renamed. Throws std::runtime_error naming the file on failure.
-void writeImage(const std::filesystem::path& path, const Image& image);
+// Writes `image` to `path` in the format the extension names (io/ImageFormats.h). Values are
+// written as given: linear radiance for HDR formats, display values in [0, 1] for the others
+// (8-bit). The file appears complete or not at all (io/OutputFiles.h). Throws
+// std::runtime_error naming the file and the reason on failure.
+void writeImage(const std::filesystem::path& path, const Image& image,
+                const std::vector<ImageAttribute>& attributes = {});
 
-// Throws std::runtime_error unless OpenImageIO can write the format `path`'s extension names.
-void checkWritableFormat(const std::filesystem::path& path);
+// Writes `image` into `file` in the format `destination`'s extension names; messages name
+// `destination` (the user's path) even where `file` is its temporary stand-in.
+void writeImageFile(const std::filesystem::path& file, const std::filesystem::path& destination,
+                    const Image& image, const std::vector<ImageAttribute>& attributes);
 
 // Throws std::runtime_error naming the file unless OpenImageIO can open it as an image (its
 // header is read, not its pixels).
 void checkReadableImage(const std::filesystem::path& path);
+
+// The value of the metadata attribute `name` in the image file, as text; nothing when the
+// file has no such attribute (or its format holds none). Throws when the file is unreadable.
+std::optional<std::string> readImageAttribute(const std::filesystem::path& path,
+                                              const std::string& name);
 
 // Reads any format OpenImageIO knows as float RGB(A) (8-bit data scaled to [0, 1]).
 Image readImage(const std::filesystem::path& path);

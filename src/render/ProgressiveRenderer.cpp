@@ -65,7 +65,11 @@ ProgressiveRenderer::ProgressiveRenderer(const scene::Scene& scene, int width, i
       targets_(width, height),
       toneMapper_(shaderDirectory())
 {
-    rowsPerBand_ = height;
+    // The first band is small: its cost is not known yet (and it pays for the driver's code
+    // generation), so a large image's first frame in one band could not be stopped for
+    // minutes. Whole frames (secondsPerBand 0) stay whole.
+    constexpr int kFirstBandRows = 8;
+    rowsPerBand_ = settings.secondsPerBand > 0.0 ? std::min(height, kFirstBandRows) : height;
     uploadAll();
 }
 

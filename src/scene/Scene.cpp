@@ -4,10 +4,15 @@ namespace scene {
 
 CameraFrame cameraFrame(const Camera& camera)
 {
+    // In double: target - eye, and its squared length, can overflow a float for points the
+    // format accepts (a far target), though the direction is well defined.
+    const glm::dvec3 forward =
+        glm::normalize(glm::dvec3(camera.target) - glm::dvec3(camera.eye));
+    const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(camera.up)));
     CameraFrame frame;
-    frame.forward = glm::normalize(camera.target - camera.eye);
-    frame.right = glm::normalize(glm::cross(frame.forward, camera.up));
-    frame.trueUp = glm::cross(frame.right, frame.forward);
+    frame.forward = glm::vec3(forward);
+    frame.right = glm::vec3(right);
+    frame.trueUp = glm::vec3(glm::cross(right, forward));
     return frame;
 }
 

@@ -6,6 +6,8 @@ namespace scene {
 
 // A scene file that cannot be rendered. what() is the one line the user sees:
 //   scenes/x.in:12: read 'sphre', expected an object type (sphere, polyhedron, ...)
+// The message shows at most 40 bytes of the token (then "...") and escapes bytes that are not
+// printable ASCII as \xNN; token() is the token whole.
 class SceneError : public std::runtime_error {
 public:
     SceneError(const std::string& file, int line, const std::string& token,

@@ -7,11 +7,18 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cfloat>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace scene {
 
@@ -26,6 +33,13 @@ const std::set<std::string> kTransformWords = {"translate", "rotate", "scale"};
 const std::set<std::string> kPrimitiveWords = {"sphere", "polyhedron", "box",  "torus",
                                                "cone",   "cylinder",   "disk"};
 const std::set<std::string> kSectionKeywords = {"environment"};
+
+// What a scene file may make the parser hold (docs/SCENE_FORMAT.md, "Limits"): far beyond any
+// scene this renderer can draw, and small enough that no file can exhaust memory or the stack.
+constexpr int kMaxCount = 100000;                 // lights, pigments, finishes, objects, planes
+constexpr int kMaxNestingDepth = 64;              // CSG blocks and transforms, one inside another
+constexpr std::size_t kMaxTokens = 4u << 20;      // words in the file
+constexpr std::size_t kMaxFileBytes = 64u << 20;  // bytes in the file
 
 bool isIdentifier(const std::string& word)
 {
@@ -164,9 +178,23 @@ private:
             ++first;
         float value = 0.0f;
         const auto [end, error] = std::from_chars(first, last, value);
+        if (error == std::errc::result_out_of_range && end == last)
+            failAt(token, expected + outOfFloatRange(text));
         if (error != std::errc() || end != last || !std::isfinite(value))
             failAt(token, expected);
         return value;
+    }
+
+    // Why a well-formed decimal number does not fit a float: too large, or too small and not
+    // zero. Read in long double, whose range is far wider (a longer number still comes back as
+    // HUGE_VALL or 0, and that is enough to tell the two apart).
+    static std::string outOfFloatRange(const std::string& text)
+    {
+        const long double value = std::strtold(text.c_str(), nullptr);
+        if (std::fabs(value) > FLT_MAX)
+            return "; this one overflows a 32-bit float, whose largest magnitude is 3.4e38";
+        return "; this one underflows a 32-bit float, whose smallest non-zero magnitude is "
+               "1.4e-45 (write 0 for zero)";
     }
 
     float numberAtLeast(const std::string& what, float minimum)
@@ -203,25 +231,22 @@ private:
         return {r, g, b};
     }
 
-    int wholeNumber(const std::string& what)
-    {
-        const std::string expected = "a whole number (" + what + ")";
-        const Token& token = next(expected);
-        int value = 0;
-        const char* last = token.text.data() + token.text.size();
-        const auto [end, error] = std::from_chars(token.text.data(), last, value);
-        if (error != std::errc() || end != last)
-            failAt(token, expected);
-        return value;
-    }
-
+    // A count bounds what the parser allocates, so it is refused at once when above
+    // kMaxCount rather than read until the file runs out.
     int count(const std::string& what)
     {
-        const std::size_t token = position_;
-        const int value = wholeNumber(what);
-        if (value < 0)
-            failAtMark(token, "a count of zero or more (" + what + ")");
-        return value;
+        const std::string expected =
+            "a count from 0 to " + std::to_string(kMaxCount) + " (" + what + ")";
+        const Token& token = next(expected);
+        long long value = 0;
+        const char* last = token.text.data() + token.text.size();
+        const auto [end, error] = std::from_chars(token.text.data(), last, value);
+        if (end != last || (error != std::errc() && error != std::errc::result_out_of_range))
+            failAt(token, "a whole number: " + expected);
+        if (error != std::errc() || value < 0 || value > kMaxCount)
+            failAt(token, expected + (value < 0 ? "" : "; a scene holds at most " +
+                                                           std::to_string(kMaxCount)));
+        return static_cast<int>(value);
     }
 
     int index(const std::string& what, std::size_t size)
@@ -298,15 +323,17 @@ private:
         const std::size_t fovToken = position_;
         camera.verticalFieldOfViewDegrees = number("vertical field of view in degrees");
 
-        const glm::vec3 view = camera.target - camera.eye;
-        if (!(glm::length(view) > 0.0f))
+        // In double, as cameraFrame() computes: a float's squared length overflows for far
+        // points, and a NaN would pass for the wrong fault.
+        const glm::dvec3 view = glm::dvec3(camera.target) - glm::dvec3(camera.eye);
+        if (!(glm::length(view) > 0.0))
             failAtMark(targetToken, "a camera target different from the eye position");
-        const glm::vec3 forward = glm::normalize(view);
-        const float upLength = glm::length(camera.up);
-        if (!(upLength > 0.0f) ||
-            glm::length(glm::cross(forward, camera.up / upLength)) < 1e-6f)
-            failAtMark(upToken, "a camera up vector that is not zero and not parallel to the "
-                            "view direction");
+        const glm::dvec3 up(camera.up);
+        if (!(glm::length(up) > 0.0))
+            failAtMark(upToken, "a camera up vector that is not zero");
+        if (!(glm::length(glm::cross(glm::normalize(view), glm::normalize(up))) >= 1e-6))
+            failAtMark(upToken, "a camera up vector not parallel to the view direction (from "
+                                "the eye to the target)");
         if (!(camera.verticalFieldOfViewDegrees > 0.0f &&
               camera.verticalFieldOfViewDegrees < 180.0f))
             failAtMark(fovToken, "a vertical field of view strictly between 0 and 180 degrees");
@@ -392,7 +419,7 @@ private:
             object.pigment = index("pigment", scene.pigments.size());
             object.finish = index("finish", scene.finishes.size());
             const std::size_t typeToken = position_;
-            object.shape = parseShape(which);
+            object.shape = parseShape(which, 0);
             const bool emissive = scene.finishes[object.finish].isEmissive();
             if (emissive && !std::holds_alternative<Sphere>(object.shape.geometry))
                 failAtMark(typeToken, "a sphere: finish " + std::to_string(object.finish) +
@@ -403,7 +430,8 @@ private:
 
     // --- shapes -------------------------------------------------------------------------
 
-    Shape parseShape(const std::string& which)
+    // `depth`: the CSG blocks and transforms this shape is inside.
+    Shape parseShape(const std::string& which, int depth)
     {
         const std::string expected =
             "an object type for " + which +
@@ -412,10 +440,14 @@ private:
         const Token& type = next(expected);
         const std::string& word = type.text;
 
+        const bool nests = kTransformWords.count(word) != 0 || kCsgWords.count(word) != 0;
+        if (nests && depth >= kMaxNestingDepth)
+            failAt(type, "a primitive or user SDF: CSG blocks and transforms nest at most " +
+                             std::to_string(kMaxNestingDepth) + " deep (" + which + ")");
         if (kTransformWords.count(word) != 0)
-            return parseTransformed(type, which);
+            return parseTransformed(type, which, depth + 1);
         if (kCsgWords.count(word) != 0)
-            return {parseCsg(type, which), std::nullopt};
+            return {parseCsg(type, which, depth + 1), std::nullopt};
         if (word == "sphere") {
             Sphere sphere;
             sphere.center = vector3("sphere centre");
@@ -505,7 +537,7 @@ private:
         return {user, std::nullopt};
     }
 
-    Shape parseTransformed(const Token& keyword, const std::string& which)
+    Shape parseTransformed(const Token& keyword, const std::string& which, int depth)
     {
         Transform transform;
         if (keyword.text == "translate") {
@@ -521,12 +553,12 @@ private:
         } else {
             transform.scale = positiveNumber("uniform scale factor");
         }
-        Shape inner = parseShape(which);
+        Shape inner = parseShape(which, depth);
         inner.transform = inner.transform ? compose(transform, *inner.transform) : transform;
         return inner;
     }
 
-    CsgNode parseCsg(const Token& keyword, const std::string& which)
+    CsgNode parseCsg(const Token& keyword, const std::string& which, int depth)
     {
         CsgNode node;
         const std::string& word = keyword.text;
@@ -561,7 +593,7 @@ private:
         while (const Token* token = peek()) {
             if (token->text == "}")
                 break;
-            node.children.push_back(parseShape(which + ", inside '" + word + "'"));
+            node.children.push_back(parseShape(which + ", inside '" + word + "'", depth));
         }
         if (atEnd())
             fail("'}' closing the '" + word + "' opened on line " +
@@ -590,21 +622,78 @@ bool isReservedShapeWord(const std::string& word)
 Scene parseSceneText(const std::string& text, const std::string& fileName,
                      const FileLookup& lookup)
 {
-    Parser parser(tokenize(text), fileName, lookup);
+    std::string_view content = text;
+    // An editor's UTF-8 byte-order mark means nothing here; a UTF-16 file cannot be read.
+    constexpr std::string_view kUtf8Mark = "\xEF\xBB\xBF";
+    if (content.substr(0, kUtf8Mark.size()) == kUtf8Mark)
+        content.remove_prefix(kUtf8Mark.size());
+    if (content.substr(0, 2) == "\xFF\xFE" || content.substr(0, 2) == "\xFE\xFF")
+        throw SceneError(fileName, 1, std::string(content.substr(0, 2)),
+                         "ASCII or UTF-8 text: this file is UTF-16 (its first bytes are a "
+                         "UTF-16 byte-order mark); save it as UTF-8");
+    std::vector<Token> tokens = tokenize(content, kMaxTokens + 1);
+    if (tokens.size() > kMaxTokens)
+        throw SceneError(fileName, tokens.back().line, tokens.back().text,
+                         "the end of the file: a scene file holds at most " +
+                             std::to_string(kMaxTokens) + " words");
+    Parser parser(std::move(tokens), fileName, lookup);
     Scene scene = parser.parse();
     scene.sourcePath = fileName;
     return scene;
 }
 
+namespace {
+
+[[noreturn]] void failToRead(const fs::path& path, int error)
+{
+    throw std::runtime_error(path.string() + ": cannot read the scene file: " +
+                             std::strerror(error));
+}
+
+// The whole file, through POSIX calls so that a failure carries the system's reason.
+std::string readSceneFileText(const fs::path& path)
+{
+    const int descriptor = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (descriptor < 0)
+        failToRead(path, errno);
+    struct Closer {
+        int descriptor;
+        ~Closer() { ::close(descriptor); }
+    } closer{descriptor};
+    struct stat status {};
+    if (::fstat(descriptor, &status) != 0)
+        failToRead(path, errno);
+    if (S_ISDIR(status.st_mode))
+        failToRead(path, EISDIR);
+    const auto tooLarge = [&] {
+        throw std::runtime_error(path.string() + ": the scene file is larger than " +
+                                 std::to_string(kMaxFileBytes >> 20) +
+                                 " MiB, the most a scene file may hold");
+    };
+    if (S_ISREG(status.st_mode) && static_cast<std::size_t>(status.st_size) > kMaxFileBytes)
+        tooLarge();
+    std::string text;
+    char buffer[1 << 16];
+    for (;;) {
+        const ssize_t count = ::read(descriptor, buffer, sizeof buffer);
+        if (count < 0 && errno == EINTR)
+            continue;
+        if (count < 0)
+            failToRead(path, errno);
+        if (count == 0)
+            break;
+        text.append(buffer, static_cast<std::size_t>(count));
+        if (text.size() > kMaxFileBytes)
+            tooLarge();
+    }
+    return text;
+}
+
+}  // namespace
+
 Scene parseSceneFile(const fs::path& path)
 {
-    std::ifstream file(path, std::ios::binary);
-    std::error_code error;
-    if (!file || fs::is_directory(path, error))
-        throw std::runtime_error(path.string() + ": cannot read the scene file");
-    std::ostringstream contents;
-    contents << file.rdbuf();
-    return parseSceneText(contents.str(), path.string(), FileLookup::forScene(path));
+    return parseSceneText(readSceneFileText(path), path.string(), FileLookup::forScene(path));
 }
 
 }  // namespace scene

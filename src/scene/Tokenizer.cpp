@@ -4,12 +4,12 @@
 
 namespace scene {
 
-std::vector<Token> tokenize(const std::string& text)
+std::vector<Token> tokenize(std::string_view text, std::size_t maxTokens)
 {
     std::vector<Token> tokens;
     int line = 1;
     std::size_t i = 0;
-    while (i < text.size()) {
+    while (i < text.size() && tokens.size() < maxTokens) {
         const char c = text[i];
         if (c == '\n') {
             ++line;
@@ -27,7 +27,7 @@ std::vector<Token> tokenize(const std::string& text)
             while (i < text.size() && !std::isspace(static_cast<unsigned char>(text[i])) &&
                    text[i] != '#' && text[i] != '{' && text[i] != '}')
                 ++i;
-            tokens.push_back({text.substr(start, i - start), line});
+            tokens.push_back({std::string(text.substr(start, i - start)), line});
         }
     }
     return tokens;

@@ -1,5 +1,7 @@
 #pragma once
+#include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace scene {
@@ -11,7 +13,8 @@ struct Token {
 
 // Splits a scene file into whitespace-separated tokens, remembering each one's line.
 // '#' starts a comment to the end of the line; '{' and '}' are tokens of their own even
-// when written against a word.
-std::vector<Token> tokenize(const std::string& text);
+// when written against a word. Stops after `maxTokens` tokens, so that what a file can make
+// the parser hold is bounded whatever its size.
+std::vector<Token> tokenize(std::string_view text, std::size_t maxTokens);
 
 }  // namespace scene

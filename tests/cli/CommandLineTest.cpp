@@ -207,17 +207,15 @@ TEST_F(CommandLine, SummaryLineEndsEveryRender)
 
 TEST_F(CommandLine, InterruptDuringTimedRenderWritesTheImageAndExits130)
 {
-    // The program watches for Ctrl-C from the moment it starts rendering; before that (loading
-    // libraries, making the context, compiling: under a second alone, more on a loaded
-    // machine) SIGINT ends it the default way. Three seconds leave room for that.
+    // Sent once the progress line (on a terminal) shows a first frame done: an interrupt
+    // before the first sample writes nothing (OutputSafetyTest.cpp).
     ProcessOptions options;
-    options.signalAfterSeconds = 3.0;
+    options.terminalColumns = 200;
+    options.signalWhenErrorShows = " spp";
     options.signal = SIGINT;
     const ProcessResult result = run({scene1(), "64", "48", "30", "--output", "i.exr"}, options);
     ASSERT_TRUE(result.exited)
-        << "the program should catch SIGINT, write the image and exit (if it was killed, had "
-           "it not finished setting up after 3 s?); "
-        << describe(result);
+        << "the program should catch SIGINT, write the image and exit; " << describe(result);
     EXPECT_EQ(result.exitStatus, 130) << describe(result);
     EXPECT_LT(result.seconds, 15.0) << "the program should stop soon after the interrupt";
     ASSERT_TRUE(fs::exists(folder_ / "i.exr")) << "the image so far should be written";
@@ -280,7 +278,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadArguments{"WidthWithoutHeight", {"64", "--spp", "1"}, "HEIGHT"},
         BadArguments{"UnknownOption", {"--fast"}, "--fast"},
         BadArguments{"UnknownOutputFormat", {"8", "8", "--spp", "1", "--output", "x.doc"},
-                     "x.doc"}),
+                     "x.doc"},
+        BadArguments{"SppGivenTwice", {"8", "8", "--spp", "4", "--spp", "8"}, "--spp"},
+        BadArguments{"OutputGivenTwiceUnderTwoNames",
+                     {"8", "8", "--spp", "1", "-o", "a.png", "--output", "b.png"}, "--output"},
+        BadArguments{"FlagGivenTwice", {"8", "8", "--spp", "1", "--quiet", "--quiet"},
+                     "--quiet"}),
     [](const ::testing::TestParamInfo<BadArguments>& info) {
         return std::string(info.param.name);
     });
@@ -294,6 +297,43 @@ TEST_F(CommandLine, HelpPrintsUsageAndSucceeds)
         << result.standardOutput;
     EXPECT_NE(result.standardOutput.find("--spp"), std::string::npos);
     EXPECT_TRUE(result.standardError.empty()) << result.standardError;
+}
+
+// Every extension --output accepts, with what it holds.
+const std::vector<std::string> kOutputExtensions = {".ppm", ".png", ".jpg", ".tif",
+                                                    ".exr", ".pfm", ".hdr"};
+
+TEST_F(CommandLine, HelpNamesEveryAcceptedOutputExtension)
+{
+    const ProcessResult result = run({"--help"});
+    ASSERT_TRUE(result.exited && result.exitStatus == 0) << describe(result);
+    for (const std::string& extension : kOutputExtensions)
+        EXPECT_NE(result.standardOutput.find(extension), std::string::npos)
+            << "--help should name " << extension;
+    EXPECT_NE(result.standardOutput.find("linear"), std::string::npos) << result.standardOutput;
+}
+
+TEST_F(CommandLine, ReadmeNamesEveryAcceptedOutputExtension)
+{
+    std::ifstream readme(sourceDirectory() / "README.md");
+    std::ostringstream text;
+    text << readme.rdbuf();
+    for (const std::string& extension : kOutputExtensions)
+        EXPECT_NE(text.str().find("`" + extension + "`"), std::string::npos)
+            << "README.md should name `" << extension << "`";
+}
+
+TEST_F(CommandLine, EveryDocumentedOutputExtensionIsWritten)
+{
+    for (const std::string& extension : kOutputExtensions) {
+        const std::string name = "x" + extension;
+        const ProcessResult result =
+            run({scene1(), "8", "6", "--spp", "1", "--quiet", "--output", name});
+        ASSERT_TRUE(result.exited && result.exitStatus == 0) << name << ": " << describe(result);
+        const io::Image image = io::readImage(folder_ / name);
+        EXPECT_EQ(image.width, 8) << name;
+        EXPECT_EQ(image.height, 6) << name;
+    }
 }
 
 TEST_F(CommandLine, VersionPrintsTheVersionAndSucceeds)

@@ -2,6 +2,8 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <pty.h>
+#include <sys/ioctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -67,13 +69,37 @@ ProcessResult runProcess(const std::vector<std::string>& arguments, const Proces
     int errorPipe[2];
     // Close-on-exec: another thread may fork a child of its own meanwhile (the window tests
     // drive xdotool while the program runs), which must not hold these pipes open.
-    if (pipe2(outputPipe, O_CLOEXEC) != 0 || pipe2(errorPipe, O_CLOEXEC) != 0)
+    if (pipe2(outputPipe, O_CLOEXEC) != 0)
         throw std::runtime_error("pipe failed");
+    if (options.terminalColumns) {
+        winsize size{};
+        size.ws_row = 24;
+        size.ws_col = static_cast<unsigned short>(*options.terminalColumns);
+        // errorPipe[0] is the terminal's master side, errorPipe[1] the child's.
+        if (openpty(&errorPipe[0], &errorPipe[1], nullptr, nullptr, &size) != 0)
+            throw std::runtime_error("openpty failed");
+        fcntl(errorPipe[0], F_SETFD, FD_CLOEXEC);
+        fcntl(errorPipe[1], F_SETFD, FD_CLOEXEC);
+    } else if (pipe2(errorPipe, O_CLOEXEC) != 0) {
+        throw std::runtime_error("pipe failed");
+    }
 
+    // Blocked before fork, so that the child has it blocked from its first instruction (a
+    // signal sent at once cannot come before); the parent restores its own mask after.
+    sigset_t parentMask;
+    if (options.startWithSignalBlocked) {
+        sigset_t blocked;
+        sigemptyset(&blocked);
+        sigaddset(&blocked, options.signal);
+        sigprocmask(SIG_BLOCK, &blocked, &parentMask);
+    }
     const auto start = std::chrono::steady_clock::now();
     const pid_t pid = fork();
-    if (pid < 0)
+    if (pid < 0) {
+        if (options.startWithSignalBlocked)
+            sigprocmask(SIG_SETMASK, &parentMask, nullptr);
         throw std::runtime_error("fork failed");
+    }
     if (pid == 0) {
         const int nullInput = open("/dev/null", O_RDONLY);
         dup2(nullInput, STDIN_FILENO);
@@ -85,9 +111,12 @@ ProcessResult runProcess(const std::vector<std::string>& arguments, const Proces
         close(errorPipe[1]);
         if (chdir(directory.c_str()) != 0)
             _exit(126);
+
         execve(argv[0], argv.data(), envp.data());
         _exit(127);
     }
+    if (options.startWithSignalBlocked)
+        sigprocmask(SIG_SETMASK, &parentMask, nullptr);
     close(outputPipe[1]);
     close(errorPipe[1]);
 
@@ -114,9 +143,16 @@ ProcessResult runProcess(const std::vector<std::string>& arguments, const Proces
             if (streams[i].fd < 0 || streams[i].revents == 0)
                 continue;
             char buffer[4096];
+            // A terminal's master side reads EIO once the child's side is closed: the end.
             const ssize_t count = read(streams[i].fd, buffer, sizeof buffer);
             if (count > 0) {
                 sinks[i]->append(buffer, static_cast<std::size_t>(count));
+                if (options.signalWhenErrorShows && !signalled && i == 1 &&
+                    result.standardError.find(*options.signalWhenErrorShows) !=
+                        std::string::npos) {
+                    kill(pid, options.signal);
+                    signalled = true;
+                }
             } else {
                 close(streams[i].fd);
                 streams[i].fd = -1;

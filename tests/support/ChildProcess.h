@@ -14,11 +14,21 @@ struct ProcessOptions {
     std::filesystem::path workingDirectory = ".";
     // Environment variables to set (a value) or remove (nullopt); the rest is inherited.
     std::map<std::string, std::optional<std::string>> environment;
-    // Sends `signal` this long after the start.
+    // Sends `signal` this long after the start,
     std::optional<double> signalAfterSeconds;
+    // or as soon as standard error shows this text (with terminalColumns: once the progress
+    // line says a frame is done).
+    std::optional<std::string> signalWhenErrorShows;
     int signal = SIGINT;
+    // The child starts with `signal` blocked: one sent before the program is ready stays
+    // pending until the program unblocks it (InterruptWatch does, once its handler is set),
+    // so "an interrupt at the very start" is exact rather than a race with its start-up.
+    bool startWithSignalBlocked = false;
     // Killed (SIGKILL) after this long; the result then says so.
     double timeoutSeconds = 100.0;
+    // Standard error on a pseudo-terminal this many columns wide (0: a terminal that does
+    // not report its width) instead of a pipe; what it shows is read into standardError.
+    std::optional<int> terminalColumns;
 };
 
 struct ProcessResult {

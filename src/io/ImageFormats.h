@@ -1,0 +1,25 @@
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace io {
+
+// The image formats the program writes, described once: the command line's check, its --help
+// and the writer all read this table (README.md lists the same).
+struct ImageFormat {
+    std::vector<std::string> extensions;  // lower case, with the dot
+    bool linearRadiance;                  // linear HDR values; else a tone-mapped picture
+    bool float32;                         // holds 32-bit floats exactly (per-pixel statistics)
+    std::string holds;                    // for --help
+};
+
+const std::vector<ImageFormat>& outputFormats();
+
+// The format `path`'s extension names (in any case), or nullptr.
+const ImageFormat* outputFormatOf(const std::filesystem::path& path);
+
+// ".ppm, .png, ..., .hdr": every extension of `formats`, for messages.
+std::string listExtensions(const std::vector<const ImageFormat*>& formats);
+
+}  // namespace io
