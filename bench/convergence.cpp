@@ -429,8 +429,8 @@ std::string referenceKey(const scene::Scene& parsed, const render::RenderSetting
                          int width, int height, int samplesPerPixel)
 {
     const scene::Scene scene = scene::dropInvisibleObjects(parsed);
-    const render::SceneShaderCode code = render::generateSceneShaderCode(
-        scene, settings.variant, render::EnvironmentBinding::BuiltIn, settings.exactGeometry);
+    const render::SceneShaderCode code =
+        render::generateSceneShaderCode(scene, render::shaderBuild(settings));
     const render::SceneUniforms uniforms = render::packSceneUniforms(scene, code);
     const fs::path shaders = scene::FileLookup::dataDirectory() / "shaders";
     Fnv1a64 hash;

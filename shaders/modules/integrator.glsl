@@ -83,6 +83,10 @@ PathState startPath(vec2 filmPoint, int cameraContaining, float cameraClear)
 // ended, its radiance then final.
 bool continuePath(inout PathState path)
 {
+#if PROFILE_COUNTERS
+    ++workSegments;
+    workOnCameraRay = path.cone.spread > 0.0;
+#endif
     SurfaceHit hit = findSurface(path.origin, path.direction, path.insideSign, path.cone,
                                  path.marchStart, path.containing);
     if (!hit.found) {

@@ -59,6 +59,18 @@ void main()
             break;
         if (going)
             continue;
+#if PROFILE_COUNTERS
+        // Sums of the work per path, not radiance (work_counters.glsl).
+        estimate += vec4(workCameraSteps, workBounceSteps, workShadowSteps, 1.0);
+        moments.rgb += vec3(workShadowRays, workSegments, workEvaluations);
+        workCameraSteps = workBounceSteps = workShadowSteps = 0;
+        workShadowRays = workSegments = workEvaluations = 0;
+        if (++completed == wanted)
+            break;
+        beginSample(pixel, uint(estimate.a + moments.a));
+        path = startPath(vec2(pixel) + sample2D(SAMPLE_PIXEL), cameraContaining, cameraClear);
+        continue;
+#endif
         vec3 value = path.radiance;
         if (isValidSample(value)) {
             float count = estimate.a + 1.0;

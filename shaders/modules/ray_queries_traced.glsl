@@ -126,6 +126,7 @@ SurfaceHit findSurface(vec3 origin, vec3 direction, float insideSign, RayCone co
         // nearest object at the stop may be the other one. (Only marched objects: the march
         // met none of the polyhedra, which rays meet exactly.)
         sceneDistanceAndObjectCulled(p, 0xffffffffu, object);
+        COUNT_WORK(workEvaluations, 1);
         normal = sceneNormal(p, kOnSurfaceNormalStep * surface.tolerance, insideSign);
     }
     // Off the surface, or on one of zero thickness: at the march's stop, which lies on the
@@ -179,6 +180,7 @@ bool spawn(vec3 p, vec3 facingNormal, vec3 direction, float tolerance, int objec
             origin = p + direction * along + facingNormal * (side * normalPart);
         else
             origin = p + facingNormal * (side * float(attempt) * clearance);
+        COUNT_WORK(workEvaluations, 1);
         if (expectedSign * sceneDistanceAndObject(origin, containing) > 0.0) {
             insideSign = expectedSign;
             if (insideSign > 0.0)
@@ -205,6 +207,7 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
     // through the shading point, so what it sees of the light is what the point sees (an
     // offset along the normal raises the point, and shadows near contacts and edges shift
     // by it). Only at grazing directions is part of the offset along the normal.
+    COUNT_WORK(workShadowRays, 1);
     float clearance = 2.0 * tolerance;
     float cosLeaving = dot(wi, s.facingNormal);
     float along = clearance / max(cosLeaving, kMinimumSpawnCosine);
@@ -248,6 +251,7 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
     float acceptedT = 0.0;
     float acceptedRadius = 0.0;
     for (int step = 0; step < uMaxMarchSteps && loopIterationAllowed(); ++step) {
+        COUNT_WORK(workShadowSteps, 1);
         if (t >= clearDistance)
             return transmittance;
         vec3 p = origin + t * wi;
@@ -308,6 +312,7 @@ float cameraMarchStart(ivec2 pixel)
     const int kConeSteps = 64;
     float t = 0.0;
     for (int step = 0; step < kConeSteps && t < limit && loopIterationAllowed(); ++step) {
+        COUNT_WORK(workCameraSteps, 1);
         float clearance = sceneDistanceCulled(uCameraEye + t * axis, culling.mask) -
                           tolerance0 - growth * t;
         float advance = 0.9 * uStepScale * clearance / (1.0 + growth);

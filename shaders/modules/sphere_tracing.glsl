@@ -73,6 +73,7 @@ MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone
     MarchHit best = MarchHit(false, 0.0, 0.0, -1, 0.0, 0.0, true);
 
     for (; stepsLeft > 0 && loopIterationAllowed(); --stepsLeft) {
+        COUNT_MARCH_STEP();
         if (t >= farDistance) {
             // Escaped, unless a relaxed step jumped past the part of the ray its safe sphere
             // covered: a surface may lie there. Then it is undone as a failed relaxation.
@@ -142,6 +143,7 @@ MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone
 // object that touches it.
 vec3 sceneGradient(vec3 p, float step)
 {
+    COUNT_WORK(workEvaluations, 6);
     const uint every = 0xffffffffu;
     vec2 h = vec2(step, 0.0);
     return vec3(sceneDistanceCulled(p + h.xyy, every) - sceneDistanceCulled(p - h.xyy, every),
@@ -201,6 +203,7 @@ bool intersectAlongRay(inout vec3 point, vec3 direction, float distance, float i
     for (int i = 0; i < kIterations && abs(d) > converged; ++i) {
         vec3 next = q + direction * (insideSign * d / approach);
         float nextDistance = sceneDistanceCulled(next, mask);
+        COUNT_WORK(workEvaluations, 1);
         if (!(abs(nextDistance) < 0.5 * abs(d)))
             return false;
         q = next;

@@ -215,8 +215,7 @@ int printShader(const CommandLine& line)
 {
     const scene::Scene scene = scene::parseSceneFile(line.scene);
     const render::SceneShaderCode code = render::generateSceneShaderCode(
-        scene::dropInvisibleObjects(scene), line.settings.variant,
-        render::EnvironmentBinding::BuiltIn, line.settings.exactGeometry);
+        scene::dropInvisibleObjects(scene), render::shaderBuild(line.settings));
     std::cout << render::assemblePathTracerSource(code,
                                                   scene::FileLookup::dataDirectory() / "shaders")
                      .text();

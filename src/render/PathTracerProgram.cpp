@@ -31,6 +31,7 @@ ShaderSource assemblePathTracerSource(const SceneShaderCode& code, const fs::pat
 
     const bool specialized = specializesShapes(code.variant);
     module("constants.glsl");
+    module("work_counters.glsl");
     module("rng.glsl");
     module("sampler.glsl");
     module("sampling.glsl");

@@ -30,12 +30,6 @@ int coarseSide(int side, int divisor)
     return std::max(1, (side + divisor - 1) / divisor);
 }
 
-EnvironmentBinding environmentBinding(const RenderSettings& settings)
-{
-    return settings.switchableEnvironment ? EnvironmentBinding::FromUniform
-                                          : EnvironmentBinding::BuiltIn;
-}
-
 }  // namespace
 
 void checkRenderSize(int width, int height)
@@ -56,8 +50,7 @@ ProgressiveRenderer::ProgressiveRenderer(const scene::Scene& scene, int width, i
                                          const RenderSettings& settings)
     : settings_(settings),
       scene_(scene::dropInvisibleObjects(scene)),
-      code_(generateSceneShaderCode(scene_, settings.variant, environmentBinding(settings),
-                                    settings.exactGeometry)),
+      code_(generateSceneShaderCode(scene_, shaderBuild(settings))),
       uniforms_(packSceneUniforms(scene_, code_)),
       program_((checkRenderSize(width, height),
                 std::make_unique<PathTracerProgram>(code_, shaderDirectory()))),
@@ -71,6 +64,29 @@ ProgressiveRenderer::ProgressiveRenderer(const scene::Scene& scene, int width, i
     constexpr int kFirstBandRows = 8;
     rowsPerBand_ = settings.secondsPerBand > 0.0 ? std::min(height, kFirstBandRows) : height;
     uploadAll();
+    generateDriverCode();
+}
+
+// A draw of one pixel that traces nothing (no sample wanted): the driver generates the
+// shader's machine code at its first draw (0.5 to 2 s on llvmpipe), and that belongs to
+// setting up, not to the first frame's time per sample.
+void ProgressiveRenderer::generateDriverCode()
+{
+    program_->program().use();
+    glUniform1i(program_->program().uniformLocation("uSamplesPerFrame"), 0);
+    glUniform1i(program_->program().uniformLocation("uSampleTarget"), 0);
+    targets_.previous().estimate.bind(0);
+    targets_.previous().moments.bind(1);
+    pigmentTextures_.texture.bind(3);
+    targets_.next().framebuffer.bindForDrawing();
+    glViewport(0, 0, width(), height());
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, 1, 1);
+    triangle_.drawFullscreenTriangle();
+    glFinish();
+    glDisable(GL_SCISSOR_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl::throwOnGlError("generating the shader's code");
 }
 
 void ProgressiveRenderer::uploadAll()
@@ -90,9 +106,7 @@ ReloadDecision ProgressiveRenderer::setScene(const scene::Scene& original,
                                              const std::vector<std::filesystem::path>& changedFiles)
 {
     scene::Scene scene = scene::dropInvisibleObjects(original);
-    SceneShaderCode code = generateSceneShaderCode(scene, settings_.variant,
-                                                   environmentBinding(settings_),
-                                                   settings_.exactGeometry);
+    SceneShaderCode code = generateSceneShaderCode(scene, shaderBuild(settings_));
     SceneUniforms uniforms = packSceneUniforms(scene, code);
     const ReloadDecision decision =
         decideReload(code_, code, uniforms_.textureLayers, uniforms.textureLayers, changedFiles);
@@ -114,6 +128,8 @@ ReloadDecision ProgressiveRenderer::setScene(const scene::Scene& original,
         pigmentTextures_ = std::move(*textures);
     uploadAll();
     restartAccumulation();
+    if (decision.rebuildShader)
+        generateDriverCode();
     return decision;
 }
 
@@ -329,6 +345,11 @@ io::Image ProgressiveRenderer::sampleStatistics() const
             statistics.at(x, y, 2) = count > 1.0f ? sumSquares / (count * (count - 1.0f)) : 0.0f;
         }
     return statistics;
+}
+
+std::pair<io::Image, io::Image> ProgressiveRenderer::accumulationTargets() const
+{
+    return {readTarget(targets_.previous().estimate, 4), readTarget(targets_.previous().moments, 4)};
 }
 
 std::uint64_t ProgressiveRenderer::discardedSamples() const

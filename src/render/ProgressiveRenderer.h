@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace render {
@@ -79,6 +80,9 @@ public:
     // Per pixel: r = samples accumulated, g = samples discarded, b = variance of the mean
     // radiance (channel average).
     io::Image sampleStatistics() const;
+    // The two accumulation targets as they are (RGBA each, top row first): in a shader built
+    // with profileCounters, the work counted per pixel (shaders/modules/work_counters.glsl).
+    std::pair<io::Image, io::Image> accumulationTargets() const;
     // Samples discarded as NaN, infinite or negative, over the whole image.
     std::uint64_t discardedSamples() const;
     // The tone-mapped picture, display values in [0, 1], top row first.
@@ -99,6 +103,7 @@ public:
 
 private:
     void uploadAll();
+    void generateDriverCode();
     void restartAccumulation();
     bool drawFrame(const std::function<bool()>& keepGoing, int samples, int target);
     // Starts the accumulation again without reseeding: cheaper than restartAccumulation,

@@ -47,6 +47,8 @@ struct RenderSettings {
     // have a closed form (shaders/modules/ray_queries_exact.glsl): the reference that the
     // tests and docs/ACCURACY.md judge the sphere tracer's geometric error against.
     bool exactGeometry = false;
+    // Count work instead of light (ShaderBuild::profileCounters), for bench_throughput.
+    bool profileCounters = false;
     std::uint64_t seed = 1;
     // Paths per pixel in one frame (one draw); the running mean is updated after each, so
     // the result is the same as that many frames of one.
@@ -55,5 +57,17 @@ struct RenderSettings {
     // render can stop (or a window respond) between them; 0 draws whole frames at once.
     double secondsPerBand = 0.25;
 };
+
+// What of the settings shapes the shader's code (the rest are uniforms).
+inline ShaderBuild shaderBuild(const RenderSettings& settings)
+{
+    ShaderBuild build;
+    build.variant = settings.variant;
+    build.environment = settings.switchableEnvironment ? EnvironmentBinding::FromUniform
+                                                       : EnvironmentBinding::BuiltIn;
+    build.exactGeometry = settings.exactGeometry;
+    build.profileCounters = settings.profileCounters;
+    return build;
+}
 
 }  // namespace render

@@ -407,12 +407,8 @@ std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compile
            "expensive\n// ones are skipped as often as possible. The culled forms, which rays "
            "march, leave out\n// the pieces a ray's mask clears (ray_culling.glsl) and the "
            "polyhedra, which rays meet\n// exactly (exactPolyhedraIntersect).\n\n";
-    // A cheap object's distance, and the condition under which a bounded one is evaluated,
-    // with the object's culling bit tested in the culled forms.
-    auto cheapDistance = [&](const Entry& entry, bool culled) {
-        const std::string bit = culled ? objectBit(entry) : "";
-        return bit.empty() ? call(entry) : bit + " ? " + call(entry) + " : FLOAT_MAX";
-    };
+    // The condition under which a bounded object is evaluated, with the object's culling bit
+    // tested in the culled forms.
     auto boundedCondition = [&](const Entry& entry, bool culled) {
         const std::string bit = culled ? objectBit(entry) : "";
         return (bit.empty() ? "" : bit + " && ") + boundTest(entry.boundSlot);
@@ -422,9 +418,16 @@ std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compile
         const std::string maskParameter = culled ? ", uint mask" : "";
         out << "float sceneDistance" << suffix << "(vec3 p" << maskParameter
             << ")\n{\n    float d = FLOAT_MAX;\n";
-        for (const Entry& entry : cheap)
-            if (!(culled && entry.exact))
-                out << "    d = min(d, " << cheapDistance(entry, culled) << ");\n";
+        // A culled object is skipped by a branch, not a select: where every lane of a SIMD
+        // group has its bit clear (a sphere light, which rays meet exactly), no lane pays for
+        // its distance.
+        for (const Entry& entry : cheap) {
+            if (culled && entry.exact)
+                continue;
+            const std::string bit = culled ? objectBit(entry) : "";
+            out << (bit.empty() ? "" : "    if (" + bit + ")\n    ") << "    d = min(d, "
+                << call(entry) << ");\n";
+        }
         for (const Entry& entry : bounded)
             out << "    if (" << boundedCondition(entry, culled) << ")\n        d = min(d, "
                 << call(entry) << ");\n";
@@ -433,11 +436,19 @@ std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compile
         out << "float sceneDistanceAndObject" << suffix << "(vec3 p" << maskParameter
             << ", out int nearest)\n{\n";
         out << "    float d = FLOAT_MAX;\n    nearest = -1;\n    float candidate;\n";
-        for (const Entry& entry : cheap)
-            if (!(culled && entry.exact))
-                out << "    candidate = " << cheapDistance(entry, culled) << ";\n"
+        for (const Entry& entry : cheap) {
+            if (culled && entry.exact)
+                continue;
+            const std::string bit = culled ? objectBit(entry) : "";
+            if (bit.empty())
+                out << "    candidate = " << call(entry) << ";\n"
                     << "    if (candidate < d) { d = candidate; nearest = " << entry.index
                     << "; }\n";
+            else
+                out << "    if (" << bit << ") {\n        candidate = " << call(entry)
+                    << ";\n        if (candidate < d) { d = candidate; nearest = "
+                    << entry.index << "; }\n    }\n";
+        }
         for (const Entry& entry : bounded)
             out << "    if (" << boundedCondition(entry, culled) << ") {\n"
                 << "        candidate = " << call(entry) << ";\n"
@@ -493,12 +504,14 @@ bool specializesShapes(ShaderVariant variant)
     return variant == ShaderVariant::Specialized || variant == ShaderVariant::ShapesOnly;
 }
 
-SceneShaderCode generateSceneShaderCode(const Scene& scene, ShaderVariant variant,
-                                        EnvironmentBinding environment, bool exactGeometry)
+SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& build)
 {
+    const ShaderVariant variant = build.variant;
+    const EnvironmentBinding environment = build.environment;
     SceneShaderCode code;
     code.variant = variant;
-    code.exactGeometry = exactGeometry;
+    code.exactGeometry = build.exactGeometry;
+    code.profileCounters = build.profileCounters;
     const bool specialized = specializesShapes(variant);
     code.features = specializesFeatures(variant) ? analyseFeatures(scene)
                                                  : SceneFeatures::everything(scene);
@@ -527,7 +540,7 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, ShaderVariant varian
         for (std::size_t i = 0; i < scene.objects.size(); ++i)
             code.objectCullingBits.push_back(i < 32 ? 1u << i : 0u);
     }
-    if (exactGeometry) {
+    if (build.exactGeometry) {
         code.exactFunctions = generateExactSceneIntersection(scene, code.shapeParameters);
     }
 
@@ -561,6 +574,7 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, ShaderVariant varian
         define(out, "ENVIRONMENT_KIND", static_cast<int>(f.environment));
     else
         out << "#define ENVIRONMENT_KIND ENVIRONMENT_KIND_FROM_UNIFORM\n";
+    define(out, "PROFILE_COUNTERS", build.profileCounters ? 1 : 0);
     code.defines = out.str();
     return code;
 }

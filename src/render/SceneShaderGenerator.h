@@ -47,6 +47,7 @@ struct SceneShaderCode {
     // below) instead of sphere tracing.
     bool exactGeometry = false;
     std::string exactFunctions;
+    bool profileCounters = false;
 
     std::vector<glm::vec4> shapeParameters;
     std::vector<glm::ivec4> shapeProgram;  // General only
@@ -57,8 +58,18 @@ struct SceneShaderCode {
     std::vector<std::uint32_t> objectCullingBits;
 };
 
-SceneShaderCode generateSceneShaderCode(const scene::Scene& scene, ShaderVariant variant,
-                                        EnvironmentBinding environment = EnvironmentBinding::BuiltIn,
-                                        bool exactGeometry = false);
+// Everything but the scene that shapes the shader's code.
+struct ShaderBuild {
+    ShaderVariant variant = ShaderVariant::Specialized;
+    EnvironmentBinding environment = EnvironmentBinding::BuiltIn;
+    // Rays find surfaces by exact intersection instead of sphere tracing (--exact-geometry).
+    bool exactGeometry = false;
+    // The shader counts its work per path (march steps by kind of ray, shadow rays, path
+    // segments) and accumulates those counts instead of radiance: bench_throughput reads
+    // them.
+    bool profileCounters = false;
+};
+
+SceneShaderCode generateSceneShaderCode(const scene::Scene& scene, const ShaderBuild& build = {});
 
 }  // namespace render

@@ -51,6 +51,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     scene::computeSceneBounds(visible);
     scene::sphereLights(visible);
     // The shader generator is the rest of what a scene file reaches without a GL context.
-    render::generateSceneShaderCode(visible, render::ShaderVariant::Specialized);
+    render::generateSceneShaderCode(visible, {render::ShaderVariant::Specialized});
     return 0;
 }

@@ -36,8 +36,9 @@ ReloadDecision decide(const std::string& before, const std::string& after,
 {
     const scene::Scene shown = parse(before);
     const scene::Scene edited = parse(after);
-    const auto shownCode = generateSceneShaderCode(shown, ShaderVariant::Specialized, environment);
-    const auto editedCode = generateSceneShaderCode(edited, ShaderVariant::Specialized, environment);
+    const auto shownCode = generateSceneShaderCode(shown, {ShaderVariant::Specialized, environment});
+    const auto editedCode =
+        generateSceneShaderCode(edited, {ShaderVariant::Specialized, environment});
     std::vector<fs::path> shownTextures;
     std::vector<fs::path> editedTextures;
     for (const scene::Pigment& pigment : shown.pigments)

@@ -22,7 +22,7 @@ using render::ShaderVariant;
 SceneShaderCode specialized(const std::string& objects, int count)
 {
     return generateSceneShaderCode(parse(sceneWithObjects(count, objects)),
-                                   ShaderVariant::Specialized);
+                                   {ShaderVariant::Specialized});
 }
 
 int occurrences(const std::string& text, const std::string& pattern)
@@ -169,7 +169,7 @@ TEST(RayCulling, GeneralShaderCullsNothing)
 {
     const SceneShaderCode code =
         generateSceneShaderCode(parse(sceneWithObjects(1, "0 0 sphere 0 0 0 1\n")),
-                                ShaderVariant::General);
+                                {ShaderVariant::General});
     EXPECT_EQ(occurrences(code.sceneFunctions, R"(cull(ByBall|ByHalfSpace)\()"), 0);
 }
 
