@@ -3,7 +3,11 @@
 // evaluations outside marches, the share of llvmpipe's lockstep lanes left waiting, and the
 // time per path and per march step. Prints a Markdown table (docs/PERFORMANCE.md).
 //
-//   bench_throughput [--size W H] [--seconds S] [--profile-spp N] [SETTINGS...] SCENE...
+//   bench_throughput [--size W H] [--seconds S] [--profile-spp N] [--dump PREFIX] [SETTINGS...]
+//                    SCENE...
+//
+// --dump writes PREFIX-SCENE-steps-per-path.pfm (march steps per path by kind of ray, per
+// pixel) and prints their spread over the pixels.
 //
 // The counts come from a shader built to count its work (RenderSettings::profileCounters,
 // shaders/modules/work_counters.glsl): deterministic for a seed, whatever else the machine
@@ -18,12 +22,14 @@
 // costs more still).
 #include "platform/OsMesaContext.h"
 #include "render/ProgressiveRenderer.h"
+#include "io/ImageFile.h"
 #include "scene/SceneParser.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <ctime>
 #include <string>
 #include <vector>
@@ -37,7 +43,7 @@ struct WorkPerPath {
 };
 
 WorkPerPath countWork(const scene::Scene& scene, int width, int height, int samples,
-                      render::RenderSettings settings)
+                      render::RenderSettings settings, const std::string& dumpPrefix)
 {
     settings.profileCounters = true;
     settings.secondsPerBand = 0.0;
@@ -46,6 +52,28 @@ WorkPerPath countWork(const scene::Scene& scene, int width, int height, int samp
         renderer.renderFrame({}, std::min(8, samples - renderer.samplesPerPixel()));
     renderer.completeSamples();
     const auto [counts, more] = renderer.accumulationTargets();
+    // The work per pixel as images, and the spread of the march steps per path over the
+    // pixels: a heavy tail is what lockstep pays for.
+    if (!dumpPrefix.empty()) {
+        io::Image perPathSteps(width, height, 3);
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x)
+                for (int channel = 0; channel < 3; ++channel)
+                    perPathSteps.at(x, y, channel) = counts.at(x, y, channel) / counts.at(x, y, 3);
+        io::writeImage(dumpPrefix + "-steps-per-path.pfm", perPathSteps);
+        const char* kinds[] = {"camera", "bounce", "shadow"};
+        for (int channel = 0; channel < 3; ++channel) {
+            std::vector<double> perPath;
+            for (int y = 0; y < height; ++y)
+                for (int x = 0; x < width; ++x)
+                    perPath.push_back(counts.at(x, y, channel) / counts.at(x, y, 3));
+            std::sort(perPath.begin(), perPath.end());
+            std::fprintf(stderr, "%s %s steps per path: median %.1f p90 %.1f p99 %.1f max %.1f\n",
+                         dumpPrefix.c_str(), kinds[channel],
+                         perPath[perPath.size() / 2], perPath[perPath.size() * 9 / 10],
+                         perPath[perPath.size() * 99 / 100], perPath.back());
+        }
+    }
     WorkPerPath work;
     double paths = 0.0, lanes = 0.0, busiest = 0.0;
     for (int y = 0; y < height; ++y)
@@ -102,7 +130,7 @@ double megapathsPerSecond(const scene::Scene& scene, int width, int height, doub
 [[noreturn]] void usage()
 {
     std::fprintf(stderr, "usage: bench_throughput [--size W H] [--seconds S] [--profile-spp N] "
-                         "[--no-culling] [--sampler independent] SCENE...\n");
+                         "[--no-culling] [--sampler independent] [--dump PREFIX] SCENE...\n");
     std::exit(2);
 }
 
@@ -114,6 +142,7 @@ int main(int argc, char* argv[])
     double seconds = 6.0;
     render::RenderSettings settings;
     std::vector<std::string> scenes;
+    std::string dumpPrefix;
     for (int i = 1; i < argc; ++i) {
         const std::string argument = argv[i];
         if (argument == "--size" && i + 2 < argc) {
@@ -121,6 +150,8 @@ int main(int argc, char* argv[])
             height = std::atoi(argv[++i]);
         } else if (argument == "--seconds" && i + 1 < argc) {
             seconds = std::atof(argv[++i]);
+        } else if (argument == "--dump" && i + 1 < argc) {
+            dumpPrefix = argv[++i];
         } else if (argument == "--profile-spp" && i + 1 < argc) {
             profileSamples = std::atoi(argv[++i]);
         } else if (argument == "--no-culling") {
@@ -143,7 +174,8 @@ int main(int argc, char* argv[])
     std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
     for (const std::string& path : scenes) {
         const scene::Scene scene = scene::parseSceneFile(path);
-        const WorkPerPath work = countWork(scene, width, height, profileSamples, settings);
+        const WorkPerPath work = countWork(scene, width, height, profileSamples, settings,
+                  dumpPrefix.empty() ? "" : dumpPrefix + "-" + std::filesystem::path(path).stem().string());
         const double rate = megapathsPerSecond(scene, width, height, seconds, settings);
         const double steps = work.cameraSteps + work.bounceSteps + work.shadowSteps;
         std::printf("| %s | %.1f | %.1f | %.1f | %.2f | %.2f | %.1f | %.0f %% | %.3f | %.1f |\n",

@@ -61,6 +61,9 @@ float distanceToSphereLight(vec3 p, vec3 direction, int light)
 // through `wo`'s side, times the BSDF and cosine, divided by the sampling densities.
 // `insideSign` is the side of the solid the incoming ray travelled in. `uSelection` picks the
 // light, `uPoint` the direction towards it (uniform on [0, 1), from the sampler).
+// Each kind of light only chooses the direction, the distance and what arrives; the BSDF and
+// the shadow ray are written once for both: llvmpipe executes both sides of every branch, so
+// a shadow march per kind would be paid twice in scenes with both kinds.
 vec3 directLighting(Surface s, vec3 wo, float tolerance, float insideSign, float uSelection,
                     vec2 uPoint)
 {
@@ -74,46 +77,50 @@ vec3 directLighting(Surface s, vec3 wo, float tolerance, float insideSign, float
     // Geometry is measured from the surface point; only the shadow ray starts off the
     // surface (shadowTransmittance), far enough not to hit it again.
     vec3 p = s.position;
-
+    vec3 wi = s.facingNormal;
+    float distance = 0.0;
+    int target = -1;
+    // What arrives along wi, over the density of choosing it (solid angle for sphere lights;
+    // point lights are a delta, their 1 / distance^2 in its place).
+    vec3 arriving = vec3(0.0);
+    // Solid-angle density of light sampling, for MIS; 0 for point lights (no BSDF sample
+    // can reach them).
+    float lightPdf = 0.0;
 #if HAS_POINT_LIGHTS
     if (isPointLight(light)) {
         vec3 toLight = lightPosition(light) - p;
-        float distance = length(toLight);
-        vec3 wi = toLight / distance;
-        float cosI = dot(s.facingNormal, wi);
-        if (cosI <= 0.0)
-            return vec3(0.0);
-        vec3 f = bsdfEvaluate(s, wo, wi);
-        if (maxComponent(f) <= 0.0)
-            return vec3(0.0);
-        vec3 transmittance = shadowTransmittance(s, wi, distance, insideSign, tolerance, -1);
-        return f * cosI * transmittance * lightEmission(light) /
-               (distance * distance * selection);
+        distance = length(toLight);
+        wi = toLight / distance;
+        arriving = lightEmission(light) / (distance * distance * selection);
     }
 #endif
-
 #if HAS_SPHERE_LIGHTS
-    float oneMinusCosThetaMax;
-    if (!sphereLightCone(p, light, oneMinusCosThetaMax))
-        return vec3(0.0);
-    vec3 axis = normalize(lightPosition(light) - p);
-    vec3 wi = basisAround(axis) * sampleUniformCone(uPoint, oneMinusCosThetaMax);
+#if HAS_POINT_LIGHTS
+    else
+#endif
+    {
+        float oneMinusCosThetaMax;
+        if (!sphereLightCone(p, light, oneMinusCosThetaMax))
+            return vec3(0.0);
+        vec3 axis = normalize(lightPosition(light) - p);
+        wi = basisAround(axis) * sampleUniformCone(uPoint, oneMinusCosThetaMax);
+        distance = distanceToSphereLight(p, wi, light);
+        target = lightObject(light);
+        lightPdf = selection * uniformConePdf(oneMinusCosThetaMax);
+        arriving = lightEmission(light) / lightPdf;
+    }
+#endif
     float cosI = dot(s.facingNormal, wi);
     if (cosI <= 0.0)
         return vec3(0.0);
     vec3 f = bsdfEvaluate(s, wo, wi);
     if (maxComponent(f) <= 0.0)
         return vec3(0.0);
-    float distance = distanceToSphereLight(p, wi, light);
-    vec3 transmittance =
-        shadowTransmittance(s, wi, distance, insideSign, tolerance, lightObject(light));
+    vec3 transmittance = shadowTransmittance(s, wi, distance, insideSign, tolerance, target);
     if (maxComponent(transmittance) <= 0.0)
         return vec3(0.0);
-    float lightPdf = selection * uniformConePdf(oneMinusCosThetaMax);
-    float weight = uUseMis != 0 ? powerHeuristic(lightPdf, bsdfPdf(s, wo, wi)) : 1.0;
-    return f * cosI * transmittance * lightEmission(light) * (weight / lightPdf);
-#else
-    return vec3(0.0);
-#endif
+    float weight = lightPdf > 0.0 && uUseMis != 0 ? powerHeuristic(lightPdf, bsdfPdf(s, wo, wi))
+                                                  : 1.0;
+    return f * cosI * transmittance * arriving * weight;
 #endif
 }

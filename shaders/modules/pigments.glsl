@@ -21,16 +21,25 @@ vec3 checkerPigment(vec3 inward, vec3 first, vec3 second, float size)
 // every `tileSize` units, blended by the normal's components. Filtering is trilinear; the
 // mip level comes from the footprint of the path's ray cone at the point (explicit LOD: the
 // screen-space derivatives GLSL offers mean nothing for a path's later vertices).
+// Only the projections with a weight are looked up, one per turn of a loop: llvmpipe
+// executes both sides of every branch, so three lookups written out would all be paid at
+// every point, while the loop goes round only as often as some pixel of the SIMD group
+// needs (once where every pixel sees an axis-aligned plane, such as a floor).
 vec3 triplanarPigment(vec3 p, vec3 normal, float layer, float tileSize, float footprint)
 {
     vec3 weights = abs(normal);
     weights /= max(weights.x + weights.y + weights.z, 1e-6);
     vec3 q = p / tileSize;
     float lod = log2(max(footprint / tileSize * uPigmentTextureSize, 1e-6));
-    vec3 alongX = textureLod(uPigmentTextures, vec3(q.yz, layer), lod).rgb;
-    vec3 alongY = textureLod(uPigmentTextures, vec3(q.xz, layer), lod).rgb;
-    vec3 alongZ = textureLod(uPigmentTextures, vec3(q.xy, layer), lod).rgb;
-    return alongX * weights.x + alongY * weights.y + alongZ * weights.z;
+    vec3 color = vec3(0.0);
+    int axis = weights.x > 0.0 ? 0 : (weights.y > 0.0 ? 1 : 2);
+    for (int lookup = 0; lookup < 3 && axis < 3; ++lookup) {
+        vec2 projected = axis == 0 ? q.yz : (axis == 1 ? q.xz : q.xy);
+        float weight = axis == 0 ? weights.x : (axis == 1 ? weights.y : weights.z);
+        color += weight * textureLod(uPigmentTextures, vec3(projected, layer), lod).rgb;
+        axis = (axis < 1 && weights.y > 0.0) ? 1 : ((axis < 2 && weights.z > 0.0) ? 2 : 3);
+    }
+    return color;
 }
 #endif
 

@@ -77,6 +77,12 @@ SurfaceHit findSurface(vec3 origin, vec3 direction, float insideSign, RayCone co
         end = min(end, lightT);
     }
 #endif
+    // A ray that came near nothing but lights has nothing to march (its culling distance
+    // still reaches past the lights): with no piece left the distance is FLOAT_MAX, and a
+    // relaxed step of it overflows, after which the march would spin through its whole
+    // budget on NaN.
+    if (culling.mask == 0u)
+        end = min(end, start);
     int stepsLeft = start < end ? uMaxMarchSteps : 0;
     float toleranceScale = 1.0;
     float from = start;
@@ -120,19 +126,17 @@ SurfaceHit findSurface(vec3 origin, vec3 direction, float insideSign, RayCone co
     surface.footprint = coneFootprint(cone, hit.t);
     surface.tolerance = hitTolerance(cone, hit.t);
     int object = hit.object;
-    vec3 normal = vec3(0.0);
     if (onSurface) {
         // Where two objects come within the tolerance of each other (a contact), the march's
         // nearest object at the stop may be the other one. (Only marched objects: the march
         // met none of the polyhedra, which rays meet exactly.)
         sceneDistanceAndObjectCulled(p, 0xffffffffu, object);
         COUNT_WORK(workEvaluations, 1);
-        normal = sceneNormal(p, kOnSurfaceNormalStep * surface.tolerance, insideSign);
     }
-    // Off the surface, or on one of zero thickness: at the march's stop, which lies on the
-    // side the ray came from.
-    if (normal == vec3(0.0))
-        normal = sceneNormal(origin + hit.t * direction, surface.tolerance, insideSign);
+    // On the surface, with the on-surface step; off it, or on a surface of zero thickness,
+    // at the march's stop, which lies on the side the ray came from.
+    vec3 normal = sceneNormal(p, kOnSurfaceNormalStep * surface.tolerance, onSurface,
+                              origin + hit.t * direction, surface.tolerance, insideSign);
     if (normal == vec3(0.0))
         normal = -direction;
     if (!onSurface)
@@ -200,6 +204,14 @@ bool spawn(vec3 p, vec3 facingNormal, vec3 direction, float tolerance, int objec
 // decides for its hits: a shadow ray grazing a silhouette or slipping past the rim of a
 // contact within the tolerance goes on, with a smaller one. A spent step budget counts as
 // blocked, as a spent budget counts as a hit for camera and path rays.
+//
+// The march runs in two nested loops: the inner one only steps, one distance each, until the
+// ray escapes or stops near a surface; the outer one judges the stop (the light reached, an
+// index-1 surface passed, a near miss marched on, or a blocker) and goes round again only
+// while some ray of the SIMD group marches on. llvmpipe executes both sides of every branch
+// for the whole group, so a judgement inside the step loop would be paid at every step.
+const int kMaxShadowStops = kNearMissRetries + kMaxShadowCrossings + 1;
+
 vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, float tolerance,
                          int target)
 {
@@ -229,9 +241,11 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
             break;
         if (!isNullInterface(wall.object))
             return vec3(0.0);
+#if HAS_NULL_INTERFACES
         transmittance *= pigmentColor(objectPigment(wall.object), origin + wall.t * wi, -wi,
                                       0.0, tolerance);
         from = wall.t + tolerance;
+#endif
     }
 #if HAS_SPHERE_LIGHTS
     if (insideSign > 0.0) {
@@ -247,46 +261,59 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
     float clearDistance = min(maxDistance, culling.escapeDistance);
     float stopTolerance = tolerance;
     int retries = 0;
+    int stepsLeft = uMaxMarchSteps;
     float t = 0.0;
     float acceptedT = 0.0;
     float acceptedRadius = 0.0;
-    for (int step = 0; step < uMaxMarchSteps && loopIterationAllowed(); ++step) {
-        COUNT_WORK(workShadowSteps, 1);
+    for (int stop = 0; stop < kMaxShadowStops && loopIterationAllowed(); ++stop) {
+        float radius = FLOAT_MAX;
+        for (; stepsLeft > 0 && loopIterationAllowed(); --stepsLeft) {
+            COUNT_WORK(workShadowSteps, 1);
+            if (t >= clearDistance)
+                break;
+            radius = insideSign * sceneDistanceCulled(origin + t * wi, culling.mask);
+            if (radius < stopTolerance)
+                break;
+            acceptedT = t;
+            acceptedRadius = radius;
+            t += radius * uStepScale;
+        }
         if (t >= clearDistance)
             return transmittance;
+        if (!(radius < stopTolerance))
+            return vec3(0.0);  // the step budget is spent
+        --stepsLeft;
         vec3 p = origin + t * wi;
-        float radius = insideSign * sceneDistanceCulled(p, culling.mask);
-        if (radius < stopTolerance) {
 #if HAS_NULL_INTERFACES || HAS_SPHERE_LIGHTS
-            int nearest;
-            sceneDistanceAndObjectCulled(p, culling.mask, nearest);
-            if (nearest == target)
-                return transmittance;
+        int nearest;
+        sceneDistanceAndObjectCulled(p, culling.mask, nearest);
+        if (nearest == target)
+            return transmittance;
 #endif
 #if HAS_NULL_INTERFACES
-            if (nearest >= 0 && isNullInterface(nearest)) {
-                transmittance *= pigmentColor(objectPigment(nearest), p, -wi, 0.0, tolerance);
-                // Step through the surface; where the step only grazed it, the march goes
-                // on from outside and crosses further along.
-                t += 2.0 * tolerance;
-                insideSign = sceneDistance(origin + t * wi) < 0.0 ? -1.0 : 1.0;
-                acceptedRadius = 0.0;
-                continue;
-            }
-#endif
-            float approach =
-                acceptedRadius > 0.0 ? (acceptedRadius - radius) / (t - acceptedT) : 0.0;
-            vec3 q = p;
-            if (radius <= 0.0 || retries == kNearMissRetries ||
-                intersectAlongRay(q, wi, insideSign * radius, insideSign, approach,
-                                  stopTolerance, culling.mask))
-                return vec3(0.0);
-            ++retries;
-            stopTolerance *= kNearMissToleranceScale;
+        if (nearest >= 0 && isNullInterface(nearest)) {
+            transmittance *= pigmentColor(objectPigment(nearest), p, -wi, 0.0, tolerance);
+            // Step through the surface; where the step only grazed it, the march goes on
+            // from outside and crosses further along.
+            t += 2.0 * tolerance;
+            insideSign = sceneDistance(origin + t * wi) < 0.0 ? -1.0 : 1.0;
+            acceptedRadius = 0.0;
+            continue;
         }
+#endif
+        float approach =
+            acceptedRadius > 0.0 ? (acceptedRadius - radius) / (t - acceptedT) : 0.0;
+        vec3 q = p;
+        if (radius <= 0.0 || retries == kNearMissRetries ||
+            intersectAlongRay(q, wi, insideSign * radius, insideSign, approach, stopTolerance,
+                              culling.mask))
+            return vec3(0.0);
+        // A near miss: march on past it with a smaller tolerance.
+        ++retries;
+        stopTolerance *= kNearMissToleranceScale;
         acceptedT = t;
         acceptedRadius = radius;
-        t += max(radius, 0.0) * uStepScale;
+        t += radius * uStepScale;
     }
     return vec3(0.0);
 }

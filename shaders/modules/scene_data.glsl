@@ -53,9 +53,15 @@ int lightObject(int light) { return int(uLights[3 * light + 2].y); }
 uint lightCullingBit(int light) { return uint(uLights[3 * light + 2].z); }
 
 // An object that refracts nothing: a dielectric of index exactly 1, between equal media.
-// It has no interface, so light passes it unbent, tinted by its pigment.
+// It has no interface, so light passes it unbent, tinted by its pigment. A constant false in
+// scenes without one, so that the code handling them compiles away: llvmpipe executes both
+// sides of every branch (masked), so code behind a branch that is never taken still costs.
 bool isNullInterface(int object)
 {
+#if HAS_NULL_INTERFACES
     int finish = objectFinish(object);
     return finishMaterial(finish) == MATERIAL_DIELECTRIC && finishIor(finish) == 1.0;
+#else
+    return false;
+#endif
 }

@@ -161,18 +161,36 @@ vec3 sceneGradient(vec3 p, float step)
 // reach there tilt the gradient. A gradient whose length is not 1 says so: it is then taken
 // again from a point backed off the surface by the taps' reach, on the side the ray came
 // from, where every tap is outside. `side` is +1 for rays outside the solid, -1 inside.
-// Zero when the gradient (nearly) vanishes, as it does on a surface of zero thickness (a
-// disk, whose distance rises on both sides): the caller chooses a fallback.
-vec3 sceneNormal(vec3 p, float step, float side)
+// A gradient that (nearly) vanishes, as on a surface of zero thickness (a disk, whose
+// distance rises on both sides), is taken again at the fallback point `q` with step
+// `qStep`, if `tryP` was true; zero when that vanishes too: the caller chooses then.
+// The attempts are one loop round a single gradient: llvmpipe executes both sides of every
+// branch, so a gradient written out once per case would cost all of them every time, while
+// a loop goes round again only when some pixel of the SIMD group needs it.
+vec3 sceneNormal(vec3 p, float step, bool tryP, vec3 q, float qStep, float side)
 {
-    vec3 gradient = sceneGradient(p, step);
-    float magnitude = length(gradient);
-    if (!(magnitude > 0.5))
-        return vec3(0.0);
-    if (abs(magnitude - 1.0) > 0.01)
-        gradient = sceneGradient(p + (side * 1.75 * step / magnitude) * gradient, step);
-    magnitude = length(gradient);
-    return magnitude > 0.0 ? gradient / magnitude : vec3(0.0);
+    vec3 at = tryP ? p : q;
+    float h = tryP ? step : qStep;
+    bool atFallback = !tryP;
+    bool backedOff = false;
+    for (int attempt = 0; attempt < 4; ++attempt) {
+        vec3 gradient = sceneGradient(at, h);
+        float magnitude = length(gradient);
+        if (!backedOff && magnitude > 0.5 && abs(magnitude - 1.0) > 0.01) {
+            at += (side * 1.75 * h / magnitude) * gradient;
+            backedOff = true;
+            continue;
+        }
+        if (backedOff ? magnitude > 0.0 : magnitude > 0.5)
+            return gradient / magnitude;
+        if (atFallback)
+            break;
+        at = q;
+        h = qStep;
+        atFallback = true;
+        backedOff = false;
+    }
+    return vec3(0.0);
 }
 
 // Moves `point`, where a march along unit `direction` through the pieces `mask` leaves
