@@ -35,7 +35,11 @@ bool exactSphere(vec3 origin, vec3 direction, vec4 sphere, float tMin, int objec
     float t = raySphereCrossing(origin, direction, sphere.xyz, sphere.w, tMin);
     if (!(t < hit.t))
         return false;
-    hit = ExactHit(t, object, (origin + t * direction - sphere.xyz) / sphere.w);
+    // Normalised, not divided by the radius: the point is on the sphere only to rounding, and
+    // a normal a little off unit length makes a reflected direction a little off unit length,
+    // which the next crossing (computed for a unit direction) puts further off the sphere:
+    // light trapped by total internal reflection drifted out after about ten bounces.
+    hit = ExactHit(t, object, normalize(origin + t * direction - sphere.xyz));
     return true;
 }
 

@@ -56,27 +56,34 @@ int nearestExcludedSphereLight(vec3 origin, vec3 direction, float start, out flo
 SurfaceHit findSurface(vec3 origin, vec3 direction, float insideSign, RayCone cone,
                        float start, int containing)
 {
+    // Polyhedra and spheres are met exactly (the culled distances the march evaluates leave
+    // them out): the march ends where the ray crosses one. A ray inside a solid can only leave
+    // it: inside one met exactly, its exit is the answer and nothing is marched; inside a
+    // marched one, no exact crossing counts. `start` only says where marched objects may begin
+    // (the camera's cone march leaves the exact ones out too): an exact one may be crossed
+    // before it. Planes are met however far away (the far distance only bounds what is
+    // marched): a floor reaches the horizon.
+    ExactHit exact = ExactHit(FLOAT_MAX, -1, vec3(0.0));
+    exactSurfacesIntersect(origin, direction, 0.0, containing, exact);
+#if HAS_MARCHED_OBJECTS
     RayCulling culling = rayCulling(origin, direction, cone);
-    // Polyhedra are met exactly (the culled distances the march evaluates leave them out):
-    // the march ends where the ray crosses one. A ray inside another solid can only leave it.
-    // `start` only says where marched objects may begin (the camera's cone march leaves
-    // polyhedra out too): a polyhedron may be crossed before it.
-    // Planes are met however far away (the far distance only bounds what is marched): a
-    // floor reaches the horizon.
-    ExactHit walls = ExactHit(FLOAT_MAX, -1, vec3(0.0));
-    exactPolyhedraIntersect(origin, direction, 0.0, walls);
-    if (containing >= 0 && walls.object != containing)
-        walls = ExactHit(FLOAT_MAX, -1, vec3(0.0));
-    float end = min(uFarDistance, walls.t);
+    float end = min(uFarDistance, exact.t);
+    if (containing >= 0 && exact.object == containing)
+        end = min(end, start);
+#endif
 #if HAS_SPHERE_LIGHTS
     int light = -1;
     float lightT = FLOAT_MAX;
     if (insideSign > 0.0) {
-        culling.mask &= ~uSphereLightPieces;
         light = nearestExcludedSphereLight(origin, direction, start, lightT);
+#if HAS_MARCHED_OBJECTS
+        culling.mask &= ~uSphereLightPieces;
         end = min(end, lightT);
+#endif
     }
 #endif
+    SurfaceHit surface;
+#if HAS_MARCHED_OBJECTS
     // A ray that came near nothing but lights has nothing to march (its culling distance
     // still reaches past the lights): with no piece left the distance is FLOAT_MAX, and a
     // relaxed step of it overflows, after which the march would spin through its whole
@@ -102,48 +109,48 @@ SurfaceHit findSurface(vec3 origin, vec3 direction, float insideSign, RayCone co
         from = hit.t;
         toleranceScale *= kNearMissToleranceScale;
     }
-    SurfaceHit surface;
-    if (!hit.found) {
-        // Nothing marched before the nearest exact crossing, if any.
-#if HAS_SPHERE_LIGHTS
-        if (light >= 0 && lightT < walls.t)
-            walls = ExactHit(lightT, lightObject(light),
-                             normalize(origin + lightT * direction - lightPosition(light)));
-#endif
-        if (walls.object < 0)
-            return noSurfaceHit();
+    if (hit.found) {
         surface.found = true;
-        surface.object = walls.object;
-        surface.t = walls.t;
-        surface.position = origin + walls.t * direction;
-        surface.normal = walls.normal;
-        surface.footprint = coneFootprint(cone, walls.t);
-        surface.tolerance = hitTolerance(cone, walls.t);
+        surface.t = hit.t;
+        surface.footprint = coneFootprint(cone, hit.t);
+        surface.tolerance = hitTolerance(cone, hit.t);
+        int object = hit.object;
+        if (onSurface) {
+            // Where two objects come within the tolerance of each other (a contact), the
+            // march's nearest object at the stop may be the other one. (Only marched objects:
+            // the march met none of those met exactly.)
+            sceneDistanceAndObjectCulled(p, 0xffffffffu, object);
+            COUNT_WORK(workEvaluations, 1);
+        }
+        // On the surface, with the on-surface step; off it, or on a surface of zero
+        // thickness, at the march's stop, which lies on the side the ray came from.
+        vec3 normal = sceneNormal(p, kOnSurfaceNormalStep * surface.tolerance, onSurface,
+                                  origin + hit.t * direction, surface.tolerance, insideSign);
+        if (normal == vec3(0.0))
+            normal = -direction;
+        if (!onSurface)
+            p -= normal * hit.sceneDistance;
+        surface.object = containing >= 0 ? containing : object;
+        surface.position = p;
+        surface.normal = normal;
         return surface;
     }
+#endif
+    // Nothing marched before the nearest exact crossing, if any.
+#if HAS_SPHERE_LIGHTS
+    if (light >= 0 && lightT < exact.t)
+        exact = ExactHit(lightT, lightObject(light),
+                         normalize(origin + lightT * direction - lightPosition(light)));
+#endif
+    if (exact.object < 0)
+        return noSurfaceHit();
     surface.found = true;
-    surface.t = hit.t;
-    surface.footprint = coneFootprint(cone, hit.t);
-    surface.tolerance = hitTolerance(cone, hit.t);
-    int object = hit.object;
-    if (onSurface) {
-        // Where two objects come within the tolerance of each other (a contact), the march's
-        // nearest object at the stop may be the other one. (Only marched objects: the march
-        // met none of the polyhedra, which rays meet exactly.)
-        sceneDistanceAndObjectCulled(p, 0xffffffffu, object);
-        COUNT_WORK(workEvaluations, 1);
-    }
-    // On the surface, with the on-surface step; off it, or on a surface of zero thickness,
-    // at the march's stop, which lies on the side the ray came from.
-    vec3 normal = sceneNormal(p, kOnSurfaceNormalStep * surface.tolerance, onSurface,
-                              origin + hit.t * direction, surface.tolerance, insideSign);
-    if (normal == vec3(0.0))
-        normal = -direction;
-    if (!onSurface)
-        p -= normal * hit.sceneDistance;
-    surface.object = containing >= 0 ? containing : object;
-    surface.position = p;
-    surface.normal = normal;
+    surface.object = exact.object;
+    surface.t = exact.t;
+    surface.position = origin + exact.t * direction;
+    surface.normal = exact.normal;
+    surface.footprint = coneFootprint(cone, exact.t);
+    surface.tolerance = hitTolerance(cone, exact.t);
     return surface;
 }
 
@@ -230,13 +237,13 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
     float maxDistance = distance - along;
     vec3 transmittance = vec3(1.0);
     RayCulling culling = sceneRayCulling(origin, wi, tolerance, 0.0);
-    // Polyhedra, which marches leave out, block where the segment crosses one; index-1
-    // ones only tint, and are passed one crossing after another.
+    // Polyhedra and spheres, which marches leave out, block where the segment crosses one;
+    // index-1 ones only tint, and are passed one crossing after another.
     float from = 0.0;
     for (int crossing = 0; crossing < kMaxShadowCrossings && loopIterationAllowed();
          ++crossing) {
         ExactHit wall = ExactHit(maxDistance, -1, vec3(0.0));
-        exactPolyhedraIntersect(origin, wi, from, wall);
+        exactSurfacesIntersect(origin, wi, from, -1, wall);
         if (wall.object < 0 || wall.object == target)
             break;
         if (!isNullInterface(wall.object))
@@ -258,6 +265,9 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
                 return vec3(0.0);
     }
 #endif
+#if !HAS_MARCHED_OBJECTS
+    return transmittance;
+#else
     float clearDistance = min(maxDistance, culling.escapeDistance);
     float stopTolerance = tolerance;
     int retries = 0;
@@ -316,6 +326,7 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
         t += radius * uStepScale;
     }
     return vec3(0.0);
+#endif
 }
 
 // How far every camera ray through `pixel` travels before any surface comes within its hit
@@ -329,6 +340,9 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
 // bounds the culling (ray_culling.glsl takes the cone's spread as growth of tolerance).
 float cameraMarchStart(ivec2 pixel)
 {
+#if !HAS_MARCHED_OBJECTS
+    return 0.0;
+#endif
     vec3 axis = cameraRayDirection(vec2(pixel) + 0.5);
     // Every ray through the pixel lies within half the pixel's diagonal of the axis; a pixel
     // subtends the largest angle at the centre of the image.

@@ -182,22 +182,28 @@ bool objectInMask(int object, uint mask)
     return object >= 32 || (mask & (1u << uint(object))) != 0u;
 }
 
-// An object that is one polyhedron, untransformed: rays meet it by exact intersection
-// (exactPolyhedraIntersect), so the culled forms, which rays march, leave it out.
-bool isExactPolyhedron(int object)
+// An object that is one polyhedron or one sphere (not a light), untransformed: rays meet it
+// by exact intersection (exactSurfacesIntersect), so the culled forms, which rays march,
+// leave it out.
+bool isExactObject(int object)
 {
     int start = uObjects[object].w;
     ivec4 first = uShapeProgram[start];
-    return first.x == OPCODE_PRIMITIVE && first.y == PRIMITIVE_POLYHEDRON &&
-           uShapeProgram[start + 1].x == OPCODE_END;
+    bool single = first.x == OPCODE_PRIMITIVE && uShapeProgram[start + 1].x == OPCODE_END;
+    return single && (first.y == PRIMITIVE_POLYHEDRON ||
+                      (first.y == PRIMITIVE_SPHERE && objectSphereLight(object) < 0));
 }
 
-void exactPolyhedraIntersect(vec3 origin, vec3 direction, float tMin, inout ExactHit hit)
+void exactSurfacesIntersect(vec3 origin, vec3 direction, float tMin, int only, inout ExactHit hit)
 {
     for (int object = 0; object < OBJECT_COUNT && loopIterationAllowed(); ++object) {
-        if (!isExactPolyhedron(object))
+        if (!isExactObject(object) || (only >= 0 && object != only))
             continue;
         ivec4 primitive = uShapeProgram[uObjects[object].w];
+        if (primitive.y == PRIMITIVE_SPHERE) {
+            exactSphere(origin, direction, uShapeParameters[primitive.z], tMin, object, hit);
+            continue;
+        }
         ConvexInterval outside = wholeRay();
         for (int plane = 0; plane < primitive.w && loopIterationAllowed(); ++plane)
             clipOutsideHalfSpace(outside, origin, direction, uShapeParameters[primitive.z + plane]);
@@ -209,7 +215,7 @@ float sceneDistanceCulled(vec3 p, uint mask)
 {
     float d = FLOAT_MAX;
     for (int object = 0; object < OBJECT_COUNT && loopIterationAllowed(); ++object)
-        if (objectInMask(object, mask) && !isExactPolyhedron(object) && mayBeNearer(object, p, d))
+        if (objectInMask(object, mask) && !isExactObject(object) && mayBeNearer(object, p, d))
             d = min(d, objectDistance(object, p));
     return d;
 }
@@ -219,7 +225,7 @@ float sceneDistanceAndObjectCulled(vec3 p, uint mask, out int nearest)
     float d = FLOAT_MAX;
     nearest = -1;
     for (int object = 0; object < OBJECT_COUNT && loopIterationAllowed(); ++object) {
-        if (!objectInMask(object, mask) || isExactPolyhedron(object) ||
+        if (!objectInMask(object, mask) || isExactObject(object) ||
             !mayBeNearer(object, p, d))
             continue;
         float candidate = objectDistance(object, p);

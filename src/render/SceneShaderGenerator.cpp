@@ -311,24 +311,25 @@ std::optional<glm::vec4> coneHalfSpace(const Cone& cone, const std::optional<Tra
 }
 
 // The scene's distance functions. Top-level polyhedra (unions of half-spaces: floors,
-// walls, rooms) are in the full forms, which every point query uses, but not in the culled
-// forms that rays march: rays meet them by exact intersection instead (the generated
-// exactPolyhedraIntersect), so a march ends at the polyhedron's exact crossing and never
-// creeps along a wall or a floor seen at grazing angles, and never stops short of one at a
-// concave edge.
+// walls, rooms) and spheres are in the full forms, which every point query uses, but not in
+// the culled forms that rays march: rays meet them by exact intersection instead (the
+// generated exactSurfacesIntersect), so a march ends at their exact crossing and never
+// creeps along a wall or a floor seen at grazing angles, never stops short of one at a
+// concave edge, and spends no steps on them.
 std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compiler,
-                                      std::vector<std::uint32_t>& objectCullingBits)
+                                      std::vector<std::uint32_t>& objectCullingBits,
+                                      bool& marchesAnything)
 {
     struct Entry {
         std::size_t index;
         std::string function;
-        bool exact;      // a polyhedron met by exact intersection: absent from culled forms
+        bool exact;      // met by exact intersection: absent from culled forms
         int boundSlot;   // -1: evaluated everywhere
         std::vector<CullingPiece> pieces;  // empty: never culled
     };
     std::vector<Entry> cheap;
     std::vector<Entry> bounded;
-    std::ostringstream polyhedra;
+    std::ostringstream exactSurfaces;
     int nextBit = 0;
     auto takeBit = [&]() -> std::optional<std::uint32_t> {
         if (nextBit == kCullingBits)
@@ -343,22 +344,48 @@ std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compile
             lightBits[static_cast<std::size_t>(light.object)] = *bit;
     objectCullingBits.assign(scene.objects.size(), 0u);
     bool everyObjectCulled = true;
+    // Whether any ray ever marches: a light with a bit is marched only by rays inside it,
+    // which need a way in (a dielectric finish) or a camera inside it.
+    marchesAnything = false;
+    for (const SphereLight& light : sphereLights(scene)) {
+        const bool enterable =
+            scene.finishes[scene.objects[light.object].finish].material() == MaterialKind::Dielectric ||
+            glm::length(scene.camera.eye - light.center) < light.radius;
+        if (enterable || lightBits.count(static_cast<std::size_t>(light.object)) == 0)
+            marchesAnything = true;
+    }
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         const Shape& shape = object.shape;
         const ShapeBound bound = boundShape(shape);
         const int boundSlot = bound.finite ? compiler.allocateBound(bound) : -1;
         Entry entry{i, compiler.emitFunction(shape), false, -1, {}};
+        // Spheres likewise (but the lights with a culling bit, which rays meet exactly as
+        // lights): a ray meets a sphere where the quadratic says, its normal is the radius's
+        // direction, and its silhouette and contacts have no tolerance band.
+        const auto* sphere = std::get_if<Sphere>(&shape.geometry);
+        if (sphere && lightBits.count(i) == 0) {
+            entry.exact = true;
+            const glm::vec3 center =
+                shape.transform ? applyTransform(*shape.transform, sphere->center) : sphere->center;
+            const float radius = shape.transform ? shape.transform->scale * sphere->radius
+                                                 : sphere->radius;
+            exactSurfaces << "    if (only < 0 || only == " << i << ")\n        exactSphere(origin, direction, "
+                      << slot(compiler.allocateValue(glm::vec4(center, radius))) << ", tMin, " << i
+                      << ", hit);\n";
+            cheap.push_back(entry);
+            continue;
+        }
         if (const auto* polyhedron = std::get_if<Polyhedron>(&shape.geometry)) {
             entry.exact = true;
-            polyhedra << "    {\n        ConvexInterval outside = wholeRay();\n";
+            exactSurfaces << "    if (only < 0 || only == " << i << ") {\n        ConvexInterval outside = wholeRay();\n";
             for (const glm::vec4& plane : polyhedron->planes) {
                 const glm::vec4 unit = plane / glm::length(glm::vec3(plane));
-                polyhedra << "        clipOutsideHalfSpace(outside, origin, direction, "
+                exactSurfaces << "        clipOutsideHalfSpace(outside, origin, direction, "
                           << slot(compiler.allocateValue(worldPlane(unit, shape.transform)))
                           << ");\n";
             }
-            polyhedra << "        exactHalfSpaceUnion(outside, tMin, " << i << ", hit);\n    }\n";
+            exactSurfaces << "        exactHalfSpaceUnion(outside, tMin, " << i << ", hit);\n    }\n";
             cheap.push_back(entry);
             continue;
         }
@@ -370,6 +397,8 @@ std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compile
             if (const auto plane = coneHalfSpace(*cone, shape.transform))
                 piece = CullingPiece{true, compiler.allocateValue(*plane), 0u};
         }
+        if (lightBits.count(i) == 0)
+            marchesAnything = true;
         if (piece) {
             const auto reserved = lightBits.find(i);
             const std::optional<std::uint32_t> bit =
@@ -406,7 +435,7 @@ std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compile
     out << "// The scene: the union of its objects. Cheap objects first, so that bounded "
            "expensive\n// ones are skipped as often as possible. The culled forms, which rays "
            "march, leave out\n// the pieces a ray's mask clears (ray_culling.glsl) and the "
-           "polyhedra, which rays meet\n// exactly (exactPolyhedraIntersect).\n\n";
+           "polyhedra and spheres,\n// which rays meet exactly (exactSurfacesIntersect).\n\n";
     // The condition under which a bounded object is evaluated, with the object's culling bit
     // tested in the culled forms.
     auto boundedCondition = [&](const Entry& entry, bool culled) {
@@ -457,11 +486,11 @@ std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compile
         out << "    return d;\n}\n\n";
     }
 
-    out << "// The first crossing in (tMin, hit.t) of every top-level polyhedron, exactly "
-           "(exact_shapes.glsl).\n"
-           "void exactPolyhedraIntersect(vec3 origin, vec3 direction, float tMin, inout "
-           "ExactHit hit)\n{\n"
-        << polyhedra.str() << "}\n\n";
+    out << "// The first crossing in (tMin, hit.t) of every top-level polyhedron and sphere, exactly\n"
+           "// (exact_shapes.glsl); of object `only` alone where it is not -1.\n"
+           "void exactSurfacesIntersect(vec3 origin, vec3 direction, float tMin, int only,\n"
+           "                            inout ExactHit hit)\n{\n"
+        << exactSurfaces.str() << "}\n\n";
 
     out << "RayCulling sceneRayCulling(vec3 origin, vec3 direction, float tolerance0,\n"
            "                           float toleranceGrowth)\n{\n"
@@ -523,7 +552,8 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
 
     ShapeCompiler compiler(code);
     if (specialized) {
-        code.sceneFunctions = specializedSceneFunctions(scene, compiler, code.objectCullingBits);
+        code.sceneFunctions = specializedSceneFunctions(scene, compiler, code.objectCullingBits,
+                                                        code.marchesAnything);
     } else {
         for (const SceneObject& object : scene.objects) {
             code.objectProgramStart.push_back(static_cast<int>(code.shapeProgram.size()));
@@ -575,6 +605,10 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
     else
         out << "#define ENVIRONMENT_KIND ENVIRONMENT_KIND_FROM_UNIFORM\n";
     define(out, "PROFILE_COUNTERS", build.profileCounters ? 1 : 0);
+    // Where every object is met exactly (polyhedra, spheres, lights), no ray marches: the
+    // sphere tracer's loops are left out, which llvmpipe would otherwise run once per ray
+    // with no pixel in them.
+    define(out, "HAS_MARCHED_OBJECTS", code.marchesAnything ? 1 : 0);
     code.defines = out.str();
     return code;
 }

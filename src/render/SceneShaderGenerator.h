@@ -48,6 +48,8 @@ struct SceneShaderCode {
     bool exactGeometry = false;
     std::string exactFunctions;
     bool profileCounters = false;
+    // Some ray marches some object (false where every object is met exactly).
+    bool marchesAnything = true;
 
     std::vector<glm::vec4> shapeParameters;
     std::vector<glm::ivec4> shapeProgram;  // General only

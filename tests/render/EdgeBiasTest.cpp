@@ -1,7 +1,8 @@
 // The default render against exact intersection (--exact-geometry) where sphere tracing
 // goes wrong if it goes wrong anywhere: the rim of a visible sphere light, a silhouette
-// against a wall of another brightness, a room's concave edges, and the floor around a
-// sphere resting on it. Image-wide means cannot see these errors (they sit in a few
+// against a wall of another brightness, a room's concave edges, and the floor around an
+// object resting on it. The silhouette and the contact are a box's: the default renderer
+// meets spheres and planes exactly, as the reference does, and marches boxes. Image-wide means cannot see these errors (they sit in a few
 // percent of the pixels), so each test compares only the pixels of its feature, found on
 // the CPU from the scene's geometry, block by block against the two images' noise.
 //
@@ -193,19 +194,19 @@ TEST(EdgeBias, VisibleSphereLightRimMatchesExactIntersection)
     expectMatchesExactGeometry(scene, rim, "the sphere light's rim");
 }
 
-TEST(EdgeBias, DiffuseSphereSilhouetteAgainstABrighterWallMatchesExactIntersection)
+TEST(EdgeBias, DiffuseBoxSilhouetteAgainstABrighterWallMatchesExactIntersection)
 {
-    // A dark sphere in front of the bright back wall, under a point light.
+    // A dark box in front of the bright back wall, under a point light.
     const std::string scene = std::string("environment none\n") + kRoomCamera +
                               "1\n0.5 1.6 1.5  12 12 12\n4\n" + kRoomPigments +
                               "solid 0.15 0.15 0.15\n1\n0 0 0 0 0 0 0\n4\n" + kRoomObjects +
-                              "3 0 sphere -0.2 -0.1 -0.8 0.6\n";
+                              "3 0 box -0.2 -0.1 -0.8  0.5 0.6 0.4\n";
     const PinholeCamera camera(sceneFromText(scene).camera, kWidth, kHeight);
-    const glm::dvec3 center(-0.2, -0.1, -0.8);
+    const glm::dvec3 center(-0.2, -0.1, -0.8), halfExtents(0.5, 0.6, 0.4);
     const PixelMask silhouette = boundaryPixels(camera, [&](glm::dvec3 d) {
-        return raySphere(camera.eye(), d, center, 0.6) > 0.0 ? 1 : 0;
+        return rayBox(camera.eye(), d, center, halfExtents) > 0.0 ? 1 : 0;
     });
-    expectMatchesExactGeometry(scene, silhouette, "the sphere's silhouette");
+    expectMatchesExactGeometry(scene, silhouette, "the box's silhouette");
 }
 
 // Which wall of the room of kRoomObjects a ray from the eye meets first.
@@ -241,47 +242,52 @@ TEST(EdgeBias, ConcaveRoomEdgesMatchExactIntersection)
     expectMatchesExactGeometry(scene, edges, "the room's edges");
 }
 
-// The floor pixels (y = -2 of the room) within `reach` of where a sphere of radius r
-// resting at (cx, cz) touches it, seen past the sphere.
-PixelMask floorAroundContact(const PinholeCamera& camera, double cx, double cz, double r,
-                             double reach)
+// The floor pixels (y = -2 of the room) within `reach` of the footprint of a box resting on
+// it (centre cx, cz, half-extents hx, hz), seen past the box.
+PixelMask floorAroundContact(const PinholeCamera& camera, const glm::dvec3& center,
+                             const glm::dvec3& halfExtents, double reach)
 {
-    const glm::dvec3 center(cx, -2.0 + r, cz);
     PixelMask mask;
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
             const glm::dvec3 d = camera.direction(x + 0.5, y + 0.5);
-            if (d.y >= 0.0 || raySphere(camera.eye(), d, center, r) > 0.0)
+            if (d.y >= 0.0 || rayBox(camera.eye(), d, center, halfExtents) > 0.0)
                 continue;
             const glm::dvec3 p = camera.eye() + d * ((-2.0 - camera.eye().y) / d.y);
-            if (std::hypot(p.x - cx, p.z - cz) < reach)
+            const double outsideX = std::max(0.0, std::abs(p.x - center.x) - halfExtents.x);
+            const double outsideZ = std::max(0.0, std::abs(p.z - center.z) - halfExtents.z);
+            if (std::hypot(outsideX, outsideZ) < reach)
                 mask.set(x, y);
         }
     return mask;
 }
 
 const char* const kContactCamera = "0 0.2 3\n0 -1.6 0\n0 1 0\n45\n";
+const glm::dvec3 kRestingBoxCenter(0.1, -1.6, -0.3);
+const glm::dvec3 kRestingBoxHalfExtents(0.45, 0.4, 0.35);
+const char* const kRestingBox = "0 0 box 0.1 -1.6 -0.3  0.45 0.4 0.35\n";
 
-TEST(EdgeBias, FloorAroundASphereRestingOnItMatchesExactIntersectionUnderAPointLight)
+TEST(EdgeBias, FloorAroundABoxRestingOnItMatchesExactIntersectionUnderAPointLight)
 {
     const std::string scene = std::string("environment none\n") + kContactCamera +
                               "1\n-0.8 1.5 1.0  10 10 10\n3\n" + kRoomPigments +
-                              "1\n0 0 0 0 0 0 0\n4\n" + kRoomObjects +
-                              "0 0 sphere 0.1 -1.4 -0.3 0.6\n";
+                              "1\n0 0 0 0 0 0 0\n4\n" + kRoomObjects + kRestingBox;
     const PinholeCamera camera(sceneFromText(scene).camera, kWidth, kHeight);
-    expectMatchesExactGeometry(scene, floorAroundContact(camera, 0.1, -0.3, 0.6, 0.45),
-                               "the floor around the contact (point light)");
+    expectMatchesExactGeometry(
+        scene, floorAroundContact(camera, kRestingBoxCenter, kRestingBoxHalfExtents, 0.3),
+        "the floor around the contact (point light)");
 }
 
-TEST(EdgeBias, FloorAroundASphereRestingOnItMatchesExactIntersectionUnderASphereLight)
+TEST(EdgeBias, FloorAroundABoxRestingOnItMatchesExactIntersectionUnderASphereLight)
 {
     const std::string scene = std::string("environment none\n") + kContactCamera + "0\n4\n" +
                               kRoomPigments + "solid 0 0 0\n2\n0 0 0 0 0 0 0\n" +
-                              "10 10 10 0 0 0 0\n5\n" + kRoomObjects +
-                              "0 0 sphere 0.1 -1.4 -0.3 0.6\n3 1 sphere -0.9 1.2 0.8 0.35\n";
+                              "10 10 10 0 0 0 0\n5\n" + kRoomObjects + kRestingBox +
+                              "3 1 sphere -0.9 1.2 0.8 0.35\n";
     const PinholeCamera camera(sceneFromText(scene).camera, kWidth, kHeight);
-    expectMatchesExactGeometry(scene, floorAroundContact(camera, 0.1, -0.3, 0.6, 0.45),
-                               "the floor around the contact (sphere light)");
+    expectMatchesExactGeometry(
+        scene, floorAroundContact(camera, kRestingBoxCenter, kRestingBoxHalfExtents, 0.3),
+        "the floor around the contact (sphere light)");
 }
 
 }  // namespace

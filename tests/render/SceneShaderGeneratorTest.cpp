@@ -49,7 +49,7 @@ void expectNear(const glm::vec4& actual, const glm::vec4& expected)
         EXPECT_NEAR(actual[i], expected[i], 1e-5f) << "component " << i;
 }
 
-// The values the k-th clipOutsideHalfSpace call of exactPolyhedraIntersect reads.
+// The values the k-th clipOutsideHalfSpace call of exactSurfacesIntersect reads.
 std::vector<glm::vec4> exactClipPlanes(const SceneShaderCode& code)
 {
     const std::regex expression(
@@ -95,14 +95,48 @@ TEST(RayCulling, PolyhedraAreMetByExactIntersectionInsteadOfMarched)
 
 TEST(RayCulling, FiniteObjectsAreCulledByTheirBoundingBalls)
 {
-    const SceneShaderCode code = specialized("0 0 sphere 1 2 3 0.5\n"
-                                             "0 0 box 0 0 0  1 2 2\n"
+    const SceneShaderCode code = specialized("0 0 box 0 0 0  1 2 2\n"
                                              "0 0 torus 0 1 0  2 0.5\n",
-                                             3);
-    EXPECT_EQ(occurrences(code.sceneFunctions, R"(cullByBall\()"), 3);
-    expectNear(culledBound(code, "cullByBall", 1), {1, 2, 3, 0.5f});
-    expectNear(culledBound(code, "cullByBall", 2), {0, 0, 0, 3});
-    expectNear(culledBound(code, "cullByBall", 4), {0, 1, 0, 2.5f});
+                                             2);
+    EXPECT_EQ(occurrences(code.sceneFunctions, R"(cullByBall\()"), 2);
+    expectNear(culledBound(code, "cullByBall", 1), {0, 0, 0, 3});
+    expectNear(culledBound(code, "cullByBall", 2), {0, 1, 0, 2.5f});
+}
+
+// The uShapeParameters values the exactSphere calls of exactSurfacesIntersect read.
+std::vector<glm::vec4> exactSpheres(const SceneShaderCode& code)
+{
+    const std::regex expression(R"(exactSphere\(origin, direction, uShapeParameters\[(\d+)\])");
+    std::vector<glm::vec4> spheres;
+    for (std::sregex_iterator it(code.sceneFunctions.begin(), code.sceneFunctions.end(),
+                                 expression);
+         it != std::sregex_iterator(); ++it)
+        spheres.push_back(code.shapeParameters.at(std::stoul((*it)[1])));
+    return spheres;
+}
+
+TEST(RayCulling, SpheresAreMetByExactIntersectionInsteadOfMarched)
+{
+    const SceneShaderCode code =
+        specialized("0 0 sphere 1 2 3 0.5\n0 0 translate 1 0 0 scale 2 sphere 0 1 0 0.25\n", 2);
+    const std::vector<glm::vec4> spheres = exactSpheres(code);
+    ASSERT_EQ(spheres.size(), 2u);
+    expectNear(spheres[0], {1, 2, 3, 0.5f});
+    expectNear(spheres[1], {1, 2, 0, 0.5f});  // in world space
+    EXPECT_EQ(occurrences(code.sceneFunctions, R"(cullByBall\()"), 0);
+    EXPECT_EQ(occurrences(functionBody(code.sceneFunctions, "float sceneDistanceCulled("),
+                          R"(shape[01]\(p\))"),
+              0)
+        << "the marched distance leaves the spheres out";
+    EXPECT_FALSE(code.marchesAnything) << "nothing is left to march";
+    EXPECT_NE(code.defines.find("#define HAS_MARCHED_OBJECTS 0"), std::string::npos);
+}
+
+TEST(RayCulling, ASceneWithAShapeWithoutAClosedFormMarches)
+{
+    const SceneShaderCode code = specialized("0 0 sphere 1 2 3 0.5\n0 0 torus 0 1 0  2 0.5\n", 2);
+    EXPECT_TRUE(code.marchesAnything);
+    EXPECT_NE(code.defines.find("#define HAS_MARCHED_OBJECTS 1"), std::string::npos);
 }
 
 TEST(RayCulling, ConeIsCulledByTheHalfSpaceOnTheFarSideOfItsApex)
@@ -143,11 +177,11 @@ TEST(RayCulling, PiecesBeyondThirtyTwoAreNeverCulled)
 {
     std::string objects;
     for (int i = 0; i < 40; ++i)
-        objects += "0 0 sphere " + std::to_string(3 * i) + " 0 0 1\n";
+        objects += "0 0 box " + std::to_string(3 * i) + " 0 0  1 1 1\n";
     const SceneShaderCode code = specialized(objects, 40);
     EXPECT_EQ(occurrences(code.sceneFunctions, R"(cullByBall\()"), 32);
     EXPECT_EQ(occurrences(code.sceneFunctions, R"(escapeDistance = FLOAT_MAX)"), 1)
-        << "spheres without a bit may be met anywhere";
+        << "boxes without a bit may be met anywhere";
 }
 
 TEST(RayCulling, EditingAValueChangesOnlyUniforms)

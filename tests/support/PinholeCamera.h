@@ -88,4 +88,25 @@ inline double raySphere(const glm::dvec3& origin, const glm::dvec3& direction,
     return along - std::sqrt(radius * radius - squaredMiss);
 }
 
+// The distance along the ray (unit direction) to where it enters the axis-aligned box, or -1
+// where it misses (slab method).
+inline double rayBox(const glm::dvec3& origin, const glm::dvec3& direction,
+                     const glm::dvec3& center, const glm::dvec3& halfExtents)
+{
+    double enter = -1e300, exit = 1e300;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double low = center[axis] - halfExtents[axis] - origin[axis];
+        const double high = center[axis] + halfExtents[axis] - origin[axis];
+        if (direction[axis] == 0.0) {
+            if (low > 0.0 || high < 0.0)
+                return -1.0;
+            continue;
+        }
+        const double t0 = low / direction[axis], t1 = high / direction[axis];
+        enter = std::max(enter, std::min(t0, t1));
+        exit = std::min(exit, std::max(t0, t1));
+    }
+    return enter <= exit && enter > 0.0 ? enter : -1.0;
+}
+
 }  // namespace testing_support
