@@ -48,12 +48,9 @@ void writeOutputs(const CommandLine& line, const render::ProgressiveRenderer& re
     const io::Image picture = io::holdsLinearRadiance(path) ? renderer.radiance()
                               : windowPicture != nullptr   ? *windowPicture
                                                            : renderer.toneMapped();
-    std::vector<io::OutputImage> images = {{path, &picture, attributes}};
-    io::Image statistics;
-    if (line.statisticsOutput) {
-        statistics = renderer.sampleStatistics();
-        images.push_back({*line.statisticsOutput, &statistics, attributes});
-    }
+    std::vector<io::OutputImage> images = {{path, picture, attributes, {}}};
+    if (line.statisticsOutput)
+        images.push_back({*line.statisticsOutput, renderer.sampleStatistics(), attributes, {}});
     io::writeAllOrNothing(images);
 }
 
