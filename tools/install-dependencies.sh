@@ -9,6 +9,7 @@ packages=(
   libopenimageio-dev openimageio-tools
   libimgui-dev libx11-dev
   libssl-dev
+  parallel slurm-wlm munge
   libgtest-dev
   xvfb xauth xdotool
   python3 python3-numpy
