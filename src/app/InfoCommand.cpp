@@ -64,7 +64,8 @@ int runInfo(const std::filesystem::path& path)
         channels += (channels.empty() ? "" : " ") + name;
     printLine("file", path.string() + ": " + file.format + ", " +
                           std::to_string(file.image.width) + "x" +
-                          std::to_string(file.image.height) + ", channels " + channels);
+                          std::to_string(file.image.height));
+    printLine("channels", channels);
     printLine("scene", metadata->sceneFile);
     printLine("scene SHA-256", metadata->sceneSha256);
     printLine("camera", render::formatCamera(metadata->camera));
