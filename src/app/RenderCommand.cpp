@@ -85,16 +85,6 @@ render::RenderFile readResumedRender(CommandLine& line, const scene::Scene& scen
     return resumed;
 }
 
-// Every sample every pixel has taken (kept and discarded).
-double samplesTakenInAll(const render::Accumulation& accumulation)
-{
-    double total = 0.0;
-    for (int y = 0; y < accumulation.height(); ++y)
-        for (int x = 0; x < accumulation.width(); ++x)
-            total += accumulation.samplesTaken(x, y);
-    return total;
-}
-
 // What an interrupted file says of itself (attribute raytracer:interrupted).
 std::string interruptionNote(const CommandLine& line, int samples, double seconds)
 {
@@ -218,7 +208,8 @@ int runRender(const CommandLine& commandLine)
     // An image without a sample is all black, and a resumed render without a new sample is
     // the file it resumed: neither is written, nor over an older file.
     const bool nothingNew =
-        resumed ? samplesTakenInAll(accumulation) <= samplesTakenInAll(resumed->accumulation)
+        resumed ? render::samplesTakenInAll(accumulation) <=
+                      render::samplesTakenInAll(resumed->accumulation)
                 : renderer.samplesPerPixel() == 0;
     if (writesFile && nothingNew) {
         if (!interrupted) {

@@ -92,12 +92,12 @@ SampleCountSpan samplesTakenSpan(const Accumulation& accumulation)
     return {static_cast<int>(std::lround(fewest)), static_cast<int>(std::lround(most))};
 }
 
-double discardedTotal(const Accumulation& accumulation)
+double samplesTakenInAll(const Accumulation& accumulation)
 {
     double total = 0.0;
     for (int y = 0; y < accumulation.height(); ++y)
         for (int x = 0; x < accumulation.width(); ++x)
-            total += accumulation.samplesDiscarded(x, y);
+            total += accumulation.samplesTaken(x, y);
     return total;
 }
 

@@ -51,7 +51,7 @@ struct SampleCountSpan {
 };
 SampleCountSpan samplesTakenSpan(const Accumulation& accumulation);
 
-// Samples discarded over the whole image.
-double discardedTotal(const Accumulation& accumulation);
+// Samples (kept and discarded) over the whole image.
+double samplesTakenInAll(const Accumulation& accumulation);
 
 }  // namespace render
