@@ -104,14 +104,6 @@ void readArguments(int argc, const char* const argv[], int first,
     }
 }
 
-bool hasExtension(const std::filesystem::path& path, const std::string& extension)
-{
-    std::string actual = path.extension().string();
-    std::transform(actual.begin(), actual.end(), actual.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return actual == extension;
-}
-
 // raytracer info FILE
 CommandLine parseInfo(int argc, const char* const argv[])
 {
@@ -156,10 +148,10 @@ CommandLine parseMerge(int argc, const char* const argv[])
                          "OUT.exr IN.exr...");
     line.merge.output = positional[0];
     line.merge.inputs.assign(positional.begin() + 1, positional.end());
-    if (!hasExtension(line.merge.output, ".exr"))
+    if (io::lowerCaseExtension(line.merge.output) != ".exr")
         throw UsageError("merge writes an OpenEXR file (it holds what a later merge needs): '" +
                          line.merge.output.string() + "' must end in .exr");
-    if (line.merge.picture && !hasExtension(*line.merge.picture, ".png"))
+    if (line.merge.picture && io::lowerCaseExtension(*line.merge.picture) != ".png")
         throw UsageError("--png names a .png file, not '" + line.merge.picture->string() + "'");
     return line;
 }

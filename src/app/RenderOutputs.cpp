@@ -5,22 +5,8 @@
 #include "io/ImageFormats.h"
 #include "render/RenderFile.h"
 
-#include <algorithm>
-#include <cctype>
 
 namespace app {
-
-namespace {
-
-bool isExr(const std::filesystem::path& path)
-{
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return extension == ".exr";
-}
-
-}  // namespace
 
 render::RenderMetadata describeRender(const std::filesystem::path& sceneFile,
                                       const std::string& sceneSha256,
@@ -49,7 +35,7 @@ std::vector<io::OutputImage> renderOutputs(
     const std::vector<io::ImageAttribute> attributes = render::metadataAttributes(metadata);
     std::vector<io::OutputImage> outputs;
     for (const std::filesystem::path& path : images) {
-        if (isExr(path))
+        if (io::lowerCaseExtension(path) == ".exr")
             outputs.push_back(render::accumulationOutput(path, accumulation, metadata));
         else if (io::holdsLinearRadiance(path))
             outputs.push_back({path, render::meanRadiance(accumulation), attributes, {}});

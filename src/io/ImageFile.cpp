@@ -6,11 +6,11 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <unistd.h>
@@ -21,17 +21,21 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string lowerExtension(const fs::path& path)
-{
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return extension;
-}
-
 bool isPfm(const fs::path& path)
 {
-    return lowerExtension(path) == ".pfm";
+    return lowerCaseExtension(path) == ".pfm";
+}
+
+// OpenImageIO says only that it could not open the file; the system says why.
+std::unique_ptr<OIIO::ImageInput> openForReading(const fs::path& path)
+{
+    if (::access(path.c_str(), R_OK) != 0)
+        throw std::runtime_error("cannot read image " + path.string() + ": " +
+                                 std::strerror(errno));
+    auto input = OIIO::ImageInput::open(path.string());
+    if (!input)
+        throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());
+    return input;
 }
 
 // Messages name the user's path: a library's message about the temporary file is rewritten.
@@ -141,21 +145,12 @@ void writeImage(const fs::path& path, const Image& image,
 
 void checkReadableImage(const fs::path& path)
 {
-    // OpenImageIO says only that it could not open the file; the system says why.
-    if (::access(path.c_str(), R_OK) != 0)
-        throw std::runtime_error("cannot read image " + path.string() + ": " +
-                                 std::strerror(errno));
-    auto input = OIIO::ImageInput::open(path.string());
-    if (!input)
-        throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());
-    input->close();
+    openForReading(path)->close();
 }
 
 std::optional<std::string> readImageAttribute(const fs::path& path, const std::string& name)
 {
-    auto input = OIIO::ImageInput::open(path.string());
-    if (!input)
-        throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());
+    const auto input = openForReading(path);
     const OIIO::ParamValue* value = input->spec().find_attribute(name);
     if (value == nullptr)
         return std::nullopt;
@@ -164,15 +159,7 @@ std::optional<std::string> readImageAttribute(const fs::path& path, const std::s
 
 Image readImage(const fs::path& path)
 {
-    auto input = OIIO::ImageInput::open(path.string());
-    if (!input)
-        throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = input->spec();
-    Image image(spec.width, spec.height, spec.nchannels);
-    if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
-        throw std::runtime_error("cannot read image " + path.string() + ": " + input->geterror());
-    input->close();
-    return image;
+    return readImageFile(path).image;
 }
 
 int ImageFileContents::channelIndex(const std::string& name) const
@@ -183,12 +170,7 @@ int ImageFileContents::channelIndex(const std::string& name) const
 
 ImageFileContents readImageFile(const fs::path& path)
 {
-    if (::access(path.c_str(), R_OK) != 0)
-        throw std::runtime_error("cannot read image " + path.string() + ": " +
-                                 std::strerror(errno));
-    auto input = OIIO::ImageInput::open(path.string());
-    if (!input)
-        throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());
+    const auto input = openForReading(path);
     const OIIO::ImageSpec& spec = input->spec();
     ImageFileContents contents;
     contents.format = input->format_name();

@@ -24,12 +24,6 @@ namespace {
 using namespace testing_support;
 namespace fs = std::filesystem;
 
-std::string describe(const ProcessResult& result)
-{
-    return result.describeEnd() + "\n--- stdout:\n" + result.standardOutput + "--- stderr:\n" +
-           result.standardError;
-}
-
 class ScaleOut : public ProgramInFolder {
 protected:
     static std::string scene1() { return (sourceDirectory() / "scenes" / "scene1.in").string(); }
