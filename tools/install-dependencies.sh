@@ -8,6 +8,8 @@ packages=(
   libglfw3-dev libglew-dev libglm-dev libosmesa6-dev
   libopenimageio-dev openimageio-tools
   libimgui-dev libx11-dev
+  libssl-dev
+  parallel slurm-wlm munge
   libgtest-dev
   xvfb xauth xdotool
   python3 python3-numpy

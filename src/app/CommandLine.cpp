@@ -63,23 +63,112 @@ std::filesystem::path CommandLine::outputPath() const
 {
     if (output)
         return *output;
+    if (resume)
+        return *resume;
     return scene.stem().string() + ".ppm";
 }
 
-CommandLine parseCommandLine(int argc, const char* const argv[])
+namespace {
+
+bool looksLikeOption(const std::string& argument)
 {
-    CommandLine line;
-    std::vector<std::string> positional;
-    // Each option once: a repeated one is more likely a mistake than a wish for the last.
+    return argument.size() > 1 && argument[0] == '-' &&
+           !(std::isdigit(static_cast<unsigned char>(argument[1])) || argument[1] == '.');
+}
+
+// Walks the arguments from `first` on: options (with their values) go to `option`, which
+// returns false for one it does not know, the rest to `positional`. Each option once: a
+// repeated one is more likely a mistake than a wish for the last.
+template <typename OptionHandler>
+void readArguments(int argc, const char* const argv[], int first,
+                   std::vector<std::string>& positional, OptionHandler option)
+{
     std::set<std::string> optionsGiven;
-    for (int i = 1; i < argc; ++i) {
+    for (int i = first; i < argc; ++i) {
         const std::string argument = argv[i];
-        const std::size_t positionalBefore = positional.size();
-        auto value = [&](const std::string& option) -> std::string {
+        auto value = [&](const std::string& name) -> std::string {
             if (i + 1 >= argc)
-                throw UsageError(option + " needs a value");
+                throw UsageError(name + " needs a value");
             return argv[++i];
         };
+        if (!looksLikeOption(argument)) {
+            positional.push_back(argument);
+            continue;
+        }
+        if (!option(argument, value))
+            throw UsageError("unknown option '" + argument + "' (see --help)");
+        const std::string name =
+            argument == "-o" ? "--output" : argument == "-h" ? "--help" : argument;
+        if (!optionsGiven.insert(name).second)
+            throw UsageError(name + " is given twice: give each option once");
+    }
+}
+
+// raytracer info FILE
+CommandLine parseInfo(int argc, const char* const argv[])
+{
+    CommandLine line;
+    line.action = Action::Info;
+    std::vector<std::string> positional;
+    readArguments(argc, argv, 2, positional, [&](const std::string& argument, auto&) {
+        if (argument != "--help" && argument != "-h")
+            return false;
+        line.action = Action::Help;
+        return true;
+    });
+    if (line.action == Action::Help)
+        return line;
+    if (positional.size() != 1)
+        throw UsageError("info takes one file: raytracer info FILE");
+    line.infoFile = positional[0];
+    return line;
+}
+
+// raytracer merge OUT.exr IN.exr... [--png FILE] [--stats-output FILE]
+CommandLine parseMerge(int argc, const char* const argv[])
+{
+    CommandLine line;
+    line.action = Action::Merge;
+    std::vector<std::string> positional;
+    readArguments(argc, argv, 2, positional, [&](const std::string& argument, auto& value) {
+        if (argument == "--help" || argument == "-h")
+            line.action = Action::Help;
+        else if (argument == "--png")
+            line.merge.picture = value(argument);
+        else if (argument == "--stats-output")
+            line.merge.statisticsOutput = value(argument);
+        else
+            return false;
+        return true;
+    });
+    if (line.action == Action::Help)
+        return line;
+    if (positional.size() < 2)
+        throw UsageError("merge needs an output and at least one input: raytracer merge "
+                         "OUT.exr IN.exr...");
+    line.merge.output = positional[0];
+    line.merge.inputs.assign(positional.begin() + 1, positional.end());
+    if (io::lowerCaseExtension(line.merge.output) != ".exr")
+        throw UsageError("merge writes an OpenEXR file (it holds what a later merge needs): '" +
+                         line.merge.output.string() + "' must end in .exr");
+    if (line.merge.picture && io::lowerCaseExtension(*line.merge.picture) != ".png")
+        throw UsageError("--png names a .png file, not '" + line.merge.picture->string() + "'");
+    return line;
+}
+
+}  // namespace
+
+CommandLine parseCommandLine(int argc, const char* const argv[])
+{
+    // A scene file called "info" or "merge" is ./info or ./merge.
+    if (argc > 1 && std::string(argv[1]) == "info")
+        return parseInfo(argc, argv);
+    if (argc > 1 && std::string(argv[1]) == "merge")
+        return parseMerge(argc, argv);
+
+    CommandLine line;
+    std::vector<std::string> positional;
+    readArguments(argc, argv, 1, positional, [&](const std::string& argument, auto& value) {
         if (argument == "--help" || argument == "-h") {
             line.action = Action::Help;
         } else if (argument == "--version") {
@@ -104,6 +193,7 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
             if (!parseWhole(text, seed) || seed < 0)
                 throw UsageError("--seed must be a whole number of 0 or more, not '" + text + "'");
             line.settings.seed = static_cast<std::uint64_t>(seed);
+            line.seedGiven = true;
         } else if (argument == "--no-specialize") {
             line.settings.variant = render::ShaderVariant::General;
         } else if (argument == "--hit-tolerance") {
@@ -160,19 +250,13 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
             else
                 throw UsageError("--sampler must be 'sobol' or 'independent', not '" + kind +
                                  "'");
-        } else if (argument.size() > 1 && argument[0] == '-' &&
-                   !(std::isdigit(static_cast<unsigned char>(argument[1])) || argument[1] == '.')) {
-            throw UsageError("unknown option '" + argument + "' (see --help)");
+        } else if (argument == "--resume") {
+            line.resume = value(argument);
         } else {
-            positional.push_back(argument);
+            return false;
         }
-        if (positional.size() == positionalBefore) {
-            const std::string option =
-                argument == "-o" ? "--output" : argument == "-h" ? "--help" : argument;
-            if (!optionsGiven.insert(option).second)
-                throw UsageError(option + " is given twice: give each option once");
-        }
-    }
+        return true;
+    });
 
     if (line.action == Action::Help || line.action == Action::Version)
         return line;
@@ -184,11 +268,15 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
     if (positional.size() >= 3) {
         line.width = positiveInteger(positional[1], "WIDTH", kLargestSide);
         line.height = positiveInteger(positional[2], "HEIGHT", kLargestSide);
+        line.sizeGiven = true;
     }
     if (positional.size() >= 4)
         line.seconds = positiveDecimal(positional[3], "SECONDS");
     if (positional.size() > 4)
         throw UsageError("unexpected argument '" + positional[4] + "' (see --help)");
+    if (line.resume && line.action == Action::Render && !line.isBatch())
+        throw UsageError("--resume goes on to an end: give --spp N (samples per pixel in all) "
+                         "or SECONDS (more)");
     return line;
 }
 
@@ -213,13 +301,26 @@ std::string outputFormatsHelp()
 std::string usageText()
 {
     return R"(usage: raytracer SCENE [WIDTH HEIGHT] [SECONDS] [options]
+       raytracer SCENE [WIDTH HEIGHT] [SECONDS] --resume FILE.exr [--spp N] [options]
+       raytracer merge OUT.exr IN.exr... [--png FILE.png] [--stats-output FILE]
+       raytracer info FILE
 
 Renders SCENE (a .in scene file) by path tracing on the GPU, WIDTH x HEIGHT pixels
 (default 640 480). Without SECONDS or --spp a window shows the image converging until it
-is closed (Escape closes it; its panel, Tab, lists the keys and mouse actions). With SECONDS the render runs that long, then writes the
-tone-mapped image as SCENE-NAME.ppm in the current folder (or --output). Without a display,
-or with --headless, rendering uses OSMesa and opens no window. Each option may be given
-once.
+is closed (Escape closes it; its panel, Tab, lists the keys and mouse actions). With
+SECONDS the render runs that long, then writes the tone-mapped image as SCENE-NAME.ppm in
+the current folder (or --output). Without a display, or with --headless, rendering uses
+OSMesa and opens no window. Each option may be given once.
+
+EXR and PNG files describe themselves in their headers (samples, seeds, settings, the
+scene's SHA-256, the program); an EXR also holds each pixel's sample count and second
+moments, so that renders can be merged and resumed (docs/SCALE_OUT.md):
+  merge                 combines renders of one scene, size and settings into OUT.exr, as
+                        one render of all their samples would; refuses (one line, nothing
+                        written) inputs that differ or share samples of one seed.
+                        --png FILE: the tone-mapped picture too; --stats-output FILE: the
+                        merged statistics
+  info                  prints what a file says of itself
 
 output:
   --spp N               stop after exactly N samples per pixel (deterministic for a seed)
@@ -228,6 +329,11 @@ output:
                         samples, variance of the mean. The image and the statistics are
                         written together or not at all; an interrupted render marks them
                         (attribute raytracer:interrupted, where the format holds attributes)
+  --resume FILE         go on from the render FILE (an .exr written by this program) until
+                        it holds --spp N samples per pixel in all, or for SECONDS more, with
+                        new samples only; writes FILE again (or --output). The scene, size
+                        and image-changing settings must be FILE's; WIDTH HEIGHT default to
+                        FILE's, --seed to its first seed. Renders headless
   --headless            render with OSMesa even when a display is available
   --seed N              random seed (default 1)
   --samples-per-frame N paths per pixel per frame (default: chosen so that a frame takes

@@ -5,10 +5,19 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace app {
 
-enum class Action { Render, Help, Version, PrintFeatures, PrintShader };
+enum class Action { Render, Help, Version, PrintFeatures, PrintShader, Info, Merge };
+
+// raytracer merge OUT.exr IN.exr... [--png FILE] [--stats-output FILE]
+struct MergeRequest {
+    std::filesystem::path output;  // .exr
+    std::vector<std::filesystem::path> inputs;
+    std::optional<std::filesystem::path> picture;  // --png: the tone-mapped picture too
+    std::optional<std::filesystem::path> statisticsOutput;
+};
 
 struct CommandLine {
     Action action = Action::Render;
@@ -24,10 +33,19 @@ struct CommandLine {
     bool samplesPerFrameGiven = false;
     bool quiet = false;
     render::RenderSettings settings;
+    // WIDTH HEIGHT and --seed were given (a resumed render takes the file's otherwise).
+    bool sizeGiven = false;
+    bool seedGiven = false;
+    // --resume FILE: go on from the render FILE holds.
+    std::optional<std::filesystem::path> resume;
+
+    std::filesystem::path infoFile;  // raytracer info FILE
+    MergeRequest merge;              // raytracer merge ...
 
     // A render that ends by itself and writes a file (as opposed to a window kept open).
     bool isBatch() const { return seconds.has_value() || samplesPerPixel.has_value(); }
-    // Where the picture goes: --output, else <scene name>.ppm in the current folder.
+    // Where the picture goes: --output, else the file resumed, else <scene name>.ppm in the
+    // current folder.
     std::filesystem::path outputPath() const;
 };
 

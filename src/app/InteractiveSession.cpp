@@ -1,6 +1,8 @@
 #include "app/InteractiveSession.h"
 
 #include "app/FramePacing.h"
+#include "app/RenderOutputs.h"
+#include "app/SceneDigest.h"
 #include "app/SceneLoading.h"
 #include "app/Snapshot.h"
 #include "render/ConvergenceEstimate.h"
@@ -68,6 +70,7 @@ InteractiveSession::InteractiveSession(platform::GlfwWindowContext& window,
       panel_(window.glfwWindow())
 {
     watcher_.watch(filesOfScene(line.scene, scene));
+    sceneSha256_ = app::sceneSha256(filesOfScene(line.scene, scene));
     panelSettings_.exposure = renderer.exposure();
     panelSettings_.hitTolerance = renderer.settings().hitTolerance;
     panelSettings_.maxBounces = renderer.settings().maxBounces;
@@ -256,6 +259,7 @@ bool InteractiveSession::reloadChangedFiles()
     const Clock::time_point start = Clock::now();
     try {
         scene::Scene edited = loadScene(line_.scene);
+        std::string editedSha256 = app::sceneSha256(filesOfScene(line_.scene, edited));
         const Clock::time_point loaded = Clock::now();
         render::CameraController camera = camera_;
         camera.setHome(edited.camera, sceneRadius(edited),
@@ -267,6 +271,7 @@ bool InteractiveSession::reloadChangedFiles()
         const double uploadSeconds = secondsBetween(loaded, Clock::now());
         camera_ = camera;
         fileScene_ = std::move(edited);
+        sceneSha256_ = std::move(editedSha256);
         watcher_.watch(filesOfScene(line_.scene, fileScene_));
         char text[200];
         if (decision.rebuildShader) {
@@ -305,7 +310,9 @@ void InteractiveSession::save()
     const SnapshotFiles files =
         snapshotFiles(line_.scene, renderer_.samplesPerPixel(), line_.output);
     try {
-        writeSnapshot(renderer_, files);
+        render::RenderMetadata metadata = describeRender(line_.scene, sceneSha256_, renderer_);
+        metadata.renderSeconds = secondsBetween(accumulationStart_, Clock::now());
+        writeSnapshot(renderer_, files, metadata);
         setStatus("saved " + files.picture.string() + " and " + files.radiance.string(), false);
     } catch (const std::exception& error) {
         setStatus(std::string("error: cannot save: ") + error.what(), true);

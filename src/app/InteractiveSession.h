@@ -38,6 +38,8 @@ public:
 
     // Seconds from the start of run to its end.
     double renderSeconds() const { return renderSeconds_; }
+    // SHA-256 of the files of the scene on screen (app/SceneDigest.h): the one last loaded.
+    const std::string& sceneSha256() const { return sceneSha256_; }
 
 private:
     using Clock = std::chrono::steady_clock;
@@ -65,6 +67,7 @@ private:
     const CommandLine& line_;
     const InterruptWatch& interrupt_;
     scene::Scene fileScene_;  // as last read from the file, its camera the file's
+    std::string sceneSha256_;  // of fileScene_'s files, as read
     render::CameraController camera_;
     FileWatcher watcher_;
     StatisticsPanel panel_;

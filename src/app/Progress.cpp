@@ -9,12 +9,13 @@
 namespace app {
 
 Progress::Progress(int width, int height, std::optional<double> seconds,
-                   std::optional<int> samplesPerPixel, bool enabled)
+                   std::optional<int> samplesPerPixel, bool enabled, int samplesAtStart)
     : width_(width),
       height_(height),
       seconds_(seconds),
       samplesPerPixel_(samplesPerPixel),
       enabled_(enabled && ::isatty(STDERR_FILENO)),
+      samplesAtStart_(samplesAtStart),
       start_(std::chrono::steady_clock::now())
 {
 }
@@ -72,7 +73,7 @@ void Progress::update(int samples)
     if (!enabled_)
         return;
     const double elapsed = elapsedSeconds();
-    const double rate = elapsed > 0.0 ? samples / elapsed : 0.0;
+    const double rate = elapsed > 0.0 ? (samples - samplesAtStart_) / elapsed : 0.0;
     double remaining = -1.0;
     if (seconds_)
         remaining = std::max(0.0, *seconds_ - elapsed);
@@ -97,14 +98,18 @@ void Progress::finish()
 }
 
 std::string Progress::summary(int width, int height, int samples, double seconds,
-                              unsigned long long discarded)
+                              unsigned long long discarded, int samplesResumed)
 {
-    const double paths = static_cast<double>(width) * height * samples;
+    const double paths = static_cast<double>(width) * height * (samples - samplesResumed);
     const double megapathsPerSecond = seconds > 0.0 ? paths / seconds / 1e6 : 0.0;
-    char line[200];
+    char resumed[80] = "";
+    if (samplesResumed > 0)
+        std::snprintf(resumed, sizeof resumed, " (%d resumed, %d new)", samplesResumed,
+                      samples - samplesResumed);
+    char line[240];
     std::snprintf(line, sizeof line,
-                  "%dx%d, %d spp in %.2f s: %.3f Mpaths/s, %llu samples discarded", width,
-                  height, samples, seconds, megapathsPerSecond, discarded);
+                  "%dx%d, %d spp%s in %.2f s: %.3f Mpaths/s, %llu samples discarded", width,
+                  height, samples, resumed, seconds, megapathsPerSecond, discarded);
     return line;
 }
 

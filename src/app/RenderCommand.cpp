@@ -1,9 +1,12 @@
 #include "app/RenderCommand.h"
 
+#include "app/BuildInfo.h"
 #include "app/FramePacing.h"
 #include "app/InteractiveSession.h"
 #include "app/Interrupt.h"
 #include "app/Progress.h"
+#include "app/RenderOutputs.h"
+#include "app/SceneDigest.h"
 #include "app/SceneLoading.h"
 #include "io/ImageFile.h"
 #include "io/OutputFiles.h"
@@ -11,6 +14,7 @@
 #include "platform/GlfwWindowContext.h"
 #include "render/PathTracerProgram.h"
 #include "render/ProgressiveRenderer.h"
+#include "render/RenderFile.h"
 #include "scene/FileLookup.h"
 #include "scene/InvisibleObjects.h"
 #include "scene/SceneFeatures.h"
@@ -39,22 +43,46 @@ std::vector<io::OutputRequest> outputRequests(const CommandLine& line)
     return outputs;
 }
 
-// Both images, or neither (io/OutputFiles.h).
-void writeOutputs(const CommandLine& line, const render::ProgressiveRenderer& renderer,
-                  const io::Image* windowPicture,
-                  const std::vector<io::ImageAttribute>& attributes)
+// The render --resume goes on from, checked against the one the command line asks for:
+// same size, scene, camera, image-changing settings and program build. `line` takes the
+// file's size and seed where the command line gives none.
+render::RenderFile readResumedRender(CommandLine& line, const scene::Scene& scene,
+                                     const std::string& sceneSha256)
 {
-    const std::filesystem::path path = line.outputPath();
-    const io::Image picture = io::holdsLinearRadiance(path) ? renderer.radiance()
-                              : windowPicture != nullptr   ? *windowPicture
-                                                           : renderer.toneMapped();
-    std::vector<io::OutputImage> images = {{path, &picture, attributes}};
-    io::Image statistics;
-    if (line.statisticsOutput) {
-        statistics = renderer.sampleStatistics();
-        images.push_back({*line.statisticsOutput, &statistics, attributes});
+    const std::filesystem::path& path = *line.resume;
+    render::RenderFile resumed;
+    try {
+        resumed = render::readRenderFile(path);
+    } catch (const std::exception& error) {
+        throw std::runtime_error(std::string("cannot resume: ") + error.what());
     }
-    io::writeAllOrNothing(images);
+    const render::RenderMetadata& held = resumed.metadata;
+    if (!line.sizeGiven) {
+        line.width = held.width;
+        line.height = held.height;
+    }
+    if (!line.seedGiven && !held.sampleRanges.empty())
+        line.settings.seed = held.sampleRanges.front().seed;
+
+    render::RenderMetadata asked = held;
+    asked.width = line.width;
+    asked.height = line.height;
+    asked.sceneSha256 = sceneSha256;
+    asked.camera = scene.camera;
+    asked.settings = line.settings;
+    asked.program = programName();
+    asked.gitCommit = gitCommit();
+    if (const auto difference = render::imageDifference(held, asked))
+        throw std::runtime_error("cannot resume " + path.string() + ": it differs from this "
+                                 "render in " + difference->what + ": " + difference->first +
+                                 " in the file, " + difference->second + " here");
+    const render::SampleCountSpan span = render::samplesTakenSpan(resumed.accumulation);
+    if (line.samplesPerPixel && span.fewest >= *line.samplesPerPixel)
+        throw std::runtime_error(path.string() + " holds " + std::to_string(span.fewest) +
+                                 " samples per pixel already: --spp " +
+                                 std::to_string(*line.samplesPerPixel) +
+                                 " adds none (--spp counts them all; give more, or SECONDS)");
+    return resumed;
 }
 
 // What an interrupted file says of itself (attribute raytracer:interrupted).
@@ -75,20 +103,31 @@ std::string interruptionNote(const CommandLine& line, int samples, double second
 
 }  // namespace
 
-int runRender(const CommandLine& line)
+int runRender(const CommandLine& commandLine)
 {
     // From the start: Ctrl-C while the shader compiles must not kill the program unseen.
     InterruptWatch interrupt;
+    CommandLine line = commandLine;
     if (line.statisticsOutput && io::resolveToSameFile(line.outputPath(), *line.statisticsOutput))
         throw UsageError("--stats-output " + line.statisticsOutput->string() + " names the same "
                          "file as the image, " + line.outputPath().string() +
                          ": give two different files");
+    if (line.resume && line.statisticsOutput &&
+        io::resolveToSameFile(*line.resume, *line.statisticsOutput))
+        throw UsageError("--stats-output " + line.statisticsOutput->string() + " names the "
+                         "render being resumed: give another file");
     // Every texture must be readable before a window opens or a frame is rendered.
     const scene::Scene scene = loadScene(line.scene);
+    std::string sceneDigest = sceneSha256(filesOfScene(line.scene, scene));
+    std::optional<render::RenderFile> resumed;
+    if (line.resume)
+        resumed = readResumedRender(line, scene, sceneDigest);
     const bool writesFile = line.isBatch() || line.output.has_value();
     if (writesFile)
         io::checkOutputsCanBeWritten(outputRequests(line));
-    const bool headless = line.headless || !platform::displayAvailable();
+    // A resumed render goes on where the file left it: no window, whose camera and settings
+    // could leave that.
+    const bool headless = line.headless || line.resume || !platform::displayAvailable();
     if (headless && !line.isBatch())
         throw UsageError(std::string(line.headless ? "--headless" : "there is no display, so") +
                          " renders need an end: give SECONDS or --spp (the image is written "
@@ -105,6 +144,13 @@ int runRender(const CommandLine& line)
     // The window's panel switches the environment off without a recompile.
     settings.switchableEnvironment = context->hasWindow();
     render::ProgressiveRenderer renderer(scene, line.width, line.height, settings);
+    int samplesResumed = 0;
+    int fewestResumed = 0;
+    if (resumed) {
+        renderer.resumeFrom(resumed->accumulation);
+        samplesResumed = renderer.samplesPerPixel();
+        fewestResumed = render::samplesTakenSpan(resumed->accumulation).fewest;
+    }
     const double setupSeconds = secondsSince(setupStart);
 
     bool endedEarly = false;
@@ -115,9 +161,11 @@ int runRender(const CommandLine& line)
         // A window closed before the end the command line set is an interrupted render.
         endedEarly = !session.run() && line.isBatch();
         renderSeconds = session.renderSeconds();
+        // The scene may have been edited and reloaded in the window.
+        sceneDigest = session.sceneSha256();
     } else {
         Progress progress(line.width, line.height, line.seconds, line.samplesPerPixel,
-                          !line.quiet);
+                          !line.quiet, samplesResumed);
         const auto renderStart = std::chrono::steady_clock::now();
         auto keepGoing = [&] {
             return !interrupt.requested() &&
@@ -139,7 +187,7 @@ int runRender(const CommandLine& line)
                 samplesPerFrame = samplesPerFrameFor(0.5, renderer.lastSecondsPerSample());
         }
         // Exactly --spp samples in every pixel, also where a frame's loop budget left one
-        // short (ProgressiveRenderer::renderFrame).
+        // short (ProgressiveRenderer::renderFrame), or an interrupted render resumed did.
         if (line.samplesPerPixel && renderer.samplesPerPixel() >= *line.samplesPerPixel &&
             !interrupt.requested())
             renderer.completeSamples();
@@ -149,26 +197,33 @@ int runRender(const CommandLine& line)
     // A render with an end (SECONDS or --spp) stopped before it by Ctrl-C or by closing its
     // window is interrupted; a window without an end is meant to be closed.
     const bool interrupted = interrupt.requested() || endedEarly;
+    const render::Accumulation accumulation = renderer.accumulation();
     std::string summary = Progress::summary(renderer.width(), renderer.height(),
                                             renderer.samplesPerPixel(), renderSeconds,
-                                            renderer.discardedSamples());
+                                            renderer.discardedSamples(), samplesResumed);
     char setup[64];
     std::snprintf(setup, sizeof setup, " (setup %.2f s)", setupSeconds);
     summary += setup;
 
-    // An image without a sample is all black: never written, and never over an older file.
-    if (writesFile && renderer.samplesPerPixel() == 0) {
+    // An image without a sample is all black, and a resumed render without a new sample is
+    // the file it resumed: neither is written, nor over an older file.
+    const bool nothingNew =
+        resumed ? render::samplesTakenInAll(accumulation) <=
+                      render::samplesTakenInAll(resumed->accumulation)
+                : renderer.samplesPerPixel() == 0;
+    if (writesFile && nothingNew) {
         if (!interrupted) {
             char reason[160];
             std::snprintf(reason, sizeof reason,
-                          "the render's %.3g s ended before its first sample was complete: "
+                          "the render's %.3g s ended before its first %ssample was complete: "
                           "nothing written (give more SECONDS)",
-                          renderSeconds);
+                          renderSeconds, resumed ? "new " : "");
             throw std::runtime_error(reason);
         }
         std::error_code error;
         const bool older = std::filesystem::exists(line.outputPath(), error);
-        std::cout << summary << " (interrupted before the first sample: nothing written"
+        std::cout << summary << " (interrupted before the first " << (resumed ? "new " : "")
+                  << "sample: nothing written"
                   << (older ? ", " + line.outputPath().string() + " left as it was" : "")
                   << ")" << std::endl;
         return kExitInterrupted;
@@ -187,12 +242,25 @@ int runRender(const CommandLine& line)
                 fromWindow = true;
             }
         }
-        std::vector<io::ImageAttribute> attributes;
+        render::RenderMetadata metadata = describeRender(line.scene, sceneDigest, renderer);
+        metadata.renderSeconds = renderSeconds;
+        if (resumed) {
+            // The new samples of each pixel take the indices from its count on: from the
+            // fewest any pixel held to the count all reach.
+            std::vector<render::SampleRange> ranges = resumed->metadata.sampleRanges;
+            ranges.push_back({line.settings.seed, fewestResumed,
+                              renderer.samplesPerPixel() - fewestResumed});
+            metadata.sampleRanges = render::normalizedRanges(ranges);
+            metadata.renderSeconds += resumed->metadata.renderSeconds;
+            metadata.mergedFrom = resumed->metadata.mergedFrom;
+        }
         if (interrupted)
-            attributes.push_back({"raytracer:interrupted",
-                                  interruptionNote(line, renderer.samplesPerPixel(),
-                                                   renderSeconds)});
-        writeOutputs(line, renderer, fromWindow ? &windowPicture : nullptr, attributes);
+            metadata.interrupted =
+                interruptionNote(line, renderer.samplesPerPixel(), renderSeconds);
+        // Both images, or neither (io/OutputFiles.h).
+        io::writeAllOrNothing(renderOutputs(
+            {line.outputPath()}, line.statisticsOutput, accumulation, metadata,
+            [&] { return fromWindow ? windowPicture : renderer.toneMapped(); }));
         summary += " -> " + line.outputPath().string();
         if (line.statisticsOutput)
             summary += " and " + line.statisticsOutput->string();

@@ -1,6 +1,7 @@
 #include "app/Snapshot.h"
 
-#include "io/ImageFile.h"
+#include "app/RenderOutputs.h"
+#include "io/OutputFiles.h"
 
 #include <string>
 
@@ -17,10 +18,12 @@ SnapshotFiles snapshotFiles(const fs::path& sceneFile, int samplesPerPixel,
     return {folder / (name + ".png"), folder / (name + ".exr")};
 }
 
-void writeSnapshot(const render::ProgressiveRenderer& renderer, const SnapshotFiles& files)
+void writeSnapshot(const render::ProgressiveRenderer& renderer, const SnapshotFiles& files,
+                   const render::RenderMetadata& metadata)
 {
-    io::writeImage(files.picture, renderer.toneMapped());
-    io::writeImage(files.radiance, renderer.radiance());
+    io::writeAllOrNothing(renderOutputs({files.picture, files.radiance}, std::nullopt,
+                                        renderer.accumulation(), metadata,
+                                        [&] { return renderer.toneMapped(); }));
 }
 
 }  // namespace app

@@ -1,5 +1,6 @@
 #pragma once
 #include "render/ProgressiveRenderer.h"
+#include "render/RenderMetadata.h"
 
 #include <filesystem>
 #include <optional>
@@ -17,7 +18,9 @@ struct SnapshotFiles {
 SnapshotFiles snapshotFiles(const std::filesystem::path& sceneFile, int samplesPerPixel,
                             const std::optional<std::filesystem::path>& output);
 
-// Writes the image the renderer holds as both files (each complete or not at all).
-void writeSnapshot(const render::ProgressiveRenderer& renderer, const SnapshotFiles& files);
+// Writes the image the renderer holds as both files, with `metadata` (both complete, or
+// neither); the EXR holds the accumulation too, as a batch render's does.
+void writeSnapshot(const render::ProgressiveRenderer& renderer, const SnapshotFiles& files,
+                   const render::RenderMetadata& metadata);
 
 }  // namespace app

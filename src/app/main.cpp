@@ -1,4 +1,7 @@
+#include "app/BuildInfo.h"
 #include "app/CommandLine.h"
+#include "app/InfoCommand.h"
+#include "app/MergeCommand.h"
 #include "app/RenderCommand.h"
 
 #include <exception>
@@ -13,7 +16,9 @@ int main(int argc, char* argv[])
             std::cout << app::usageText();
             return app::kExitSuccess;
         case app::Action::Version:
-            std::cout << "raytracer " << RAYTRACER_VERSION << "\n";
+            std::cout << app::programName()
+                      << (app::gitCommit().empty() ? "" : " (commit " + app::gitCommit() + ")")
+                      << "\n";
             return app::kExitSuccess;
         case app::Action::PrintFeatures:
             return app::printFeatures(line);
@@ -21,6 +26,10 @@ int main(int argc, char* argv[])
             return app::printShader(line);
         case app::Action::Render:
             return app::runRender(line);
+        case app::Action::Info:
+            return app::runInfo(line.infoFile);
+        case app::Action::Merge:
+            return app::runMerge(line.merge);
         }
     } catch (const app::UsageError& error) {
         std::cerr << "raytracer: " << error.what() << "\n";

@@ -6,11 +6,11 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <unistd.h>
@@ -21,17 +21,21 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string lowerExtension(const fs::path& path)
-{
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return extension;
-}
-
 bool isPfm(const fs::path& path)
 {
-    return lowerExtension(path) == ".pfm";
+    return lowerCaseExtension(path) == ".pfm";
+}
+
+// OpenImageIO says only that it could not open the file; the system says why.
+std::unique_ptr<OIIO::ImageInput> openForReading(const fs::path& path)
+{
+    if (::access(path.c_str(), R_OK) != 0)
+        throw std::runtime_error("cannot read image " + path.string() + ": " +
+                                 std::strerror(errno));
+    auto input = OIIO::ImageInput::open(path.string());
+    if (!input)
+        throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());
+    return input;
 }
 
 // Messages name the user's path: a library's message about the temporary file is rewritten.
@@ -77,7 +81,8 @@ void writePfm(const fs::path& file, const fs::path& destination, const Image& im
 
 void writeThroughOpenImageIo(const fs::path& file, const fs::path& destination,
                              const ImageFormat& format, const Image& image,
-                             const std::vector<ImageAttribute>& attributes)
+                             const std::vector<ImageAttribute>& attributes,
+                             const std::vector<std::string>& channelNames)
 {
     // The writer is chosen by the destination's extension, whatever the file is called.
     auto output = OIIO::ImageOutput::create(destination.string());
@@ -86,6 +91,16 @@ void writeThroughOpenImageIo(const fs::path& file, const fs::path& destination,
                                  ": OpenImageIO has no writer for this format");
     OIIO::ImageSpec spec(image.width, image.height, image.channels,
                          format.linearRadiance ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    if (!channelNames.empty()) {
+        if (static_cast<int>(channelNames.size()) != image.channels)
+            throw std::logic_error("writing " + destination.string() + ": " +
+                                   std::to_string(channelNames.size()) + " channel names for " +
+                                   std::to_string(image.channels) + " channels");
+        spec.channelnames = channelNames;
+        const auto alpha = std::find(channelNames.begin(), channelNames.end(), "A");
+        spec.alpha_channel =
+            alpha == channelNames.end() ? -1 : static_cast<int>(alpha - channelNames.begin());
+    }
     for (const ImageAttribute& attribute : attributes)
         spec.attribute(attribute.name, attribute.value);
     if (!output->open(file.string(), spec))
@@ -109,7 +124,8 @@ bool holdsLinearRadiance(const fs::path& path)
 }
 
 void writeImageFile(const fs::path& file, const fs::path& destination, const Image& image,
-                    const std::vector<ImageAttribute>& attributes)
+                    const std::vector<ImageAttribute>& attributes,
+                    const std::vector<std::string>& channelNames)
 {
     const ImageFormat* format = outputFormatOf(destination);
     if (format == nullptr)
@@ -118,32 +134,23 @@ void writeImageFile(const fs::path& file, const fs::path& destination, const Ima
     if (isPfm(destination))
         writePfm(file, destination, image);
     else
-        writeThroughOpenImageIo(file, destination, *format, image, attributes);
+        writeThroughOpenImageIo(file, destination, *format, image, attributes, channelNames);
 }
 
 void writeImage(const fs::path& path, const Image& image,
                 const std::vector<ImageAttribute>& attributes)
 {
-    writeAllOrNothing({{path, &image, attributes}});
+    writeAllOrNothing({{path, image, attributes, {}}});
 }
 
 void checkReadableImage(const fs::path& path)
 {
-    // OpenImageIO says only that it could not open the file; the system says why.
-    if (::access(path.c_str(), R_OK) != 0)
-        throw std::runtime_error("cannot read image " + path.string() + ": " +
-                                 std::strerror(errno));
-    auto input = OIIO::ImageInput::open(path.string());
-    if (!input)
-        throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());
-    input->close();
+    openForReading(path)->close();
 }
 
 std::optional<std::string> readImageAttribute(const fs::path& path, const std::string& name)
 {
-    auto input = OIIO::ImageInput::open(path.string());
-    if (!input)
-        throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());
+    const auto input = openForReading(path);
     const OIIO::ParamValue* value = input->spec().find_attribute(name);
     if (value == nullptr)
         return std::nullopt;
@@ -152,15 +159,33 @@ std::optional<std::string> readImageAttribute(const fs::path& path, const std::s
 
 Image readImage(const fs::path& path)
 {
-    auto input = OIIO::ImageInput::open(path.string());
-    if (!input)
-        throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());
+    return readImageFile(path).image;
+}
+
+int ImageFileContents::channelIndex(const std::string& name) const
+{
+    const auto found = std::find(channelNames.begin(), channelNames.end(), name);
+    return found == channelNames.end() ? -1 : static_cast<int>(found - channelNames.begin());
+}
+
+ImageFileContents readImageFile(const fs::path& path)
+{
+    const auto input = openForReading(path);
     const OIIO::ImageSpec& spec = input->spec();
-    Image image(spec.width, spec.height, spec.nchannels);
-    if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data()))
+    ImageFileContents contents;
+    contents.format = input->format_name();
+    contents.image = Image(spec.width, spec.height, spec.nchannels);
+    contents.channelNames = spec.channelnames;
+    for (const OIIO::ParamValue& attribute : spec.extra_attribs)
+        contents.attributes.push_back(
+            {attribute.name().string(), attribute.type() == OIIO::TypeDesc::STRING
+                                            ? std::string(attribute.get_string())
+                                            : std::string(spec.metadata_val(attribute))});
+    if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
+                           contents.image.pixels.data()))
         throw std::runtime_error("cannot read image " + path.string() + ": " + input->geterror());
     input->close();
-    return image;
+    return contents;
 }
 
 }  // namespace io

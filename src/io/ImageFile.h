@@ -27,8 +27,11 @@ void writeImage(const std::filesystem::path& path, const Image& image,
 
 // Writes `image` into `file` in the format `destination`'s extension names; messages name
 // `destination` (the user's path) even where `file` is its temporary stand-in.
+// `channelNames`, where the format names channels (EXR): one per channel; empty, the
+// format's default (R, G, B, A).
 void writeImageFile(const std::filesystem::path& file, const std::filesystem::path& destination,
-                    const Image& image, const std::vector<ImageAttribute>& attributes);
+                    const Image& image, const std::vector<ImageAttribute>& attributes,
+                    const std::vector<std::string>& channelNames = {});
 
 // Throws std::runtime_error naming the file unless OpenImageIO can open it as an image (its
 // header is read, not its pixels).
@@ -41,5 +44,19 @@ std::optional<std::string> readImageAttribute(const std::filesystem::path& path,
 
 // Reads any format OpenImageIO knows as float RGB(A) (8-bit data scaled to [0, 1]).
 Image readImage(const std::filesystem::path& path);
+
+// An image file as it is: every channel in the file's order with its name, and every
+// attribute of its header as text.
+struct ImageFileContents {
+    Image image;
+    std::vector<std::string> channelNames;
+    std::vector<ImageAttribute> attributes;
+    std::string format;  // OpenImageIO's name for it: "openexr", "png", ...
+
+    // The index of the channel called `name`, or -1.
+    int channelIndex(const std::string& name) const;
+};
+// Throws std::runtime_error naming the file and the reason when it cannot be read.
+ImageFileContents readImageFile(const std::filesystem::path& path);
 
 }  // namespace io

@@ -19,11 +19,17 @@ const std::vector<ImageFormat>& outputFormats()
     return formats;
 }
 
-const ImageFormat* outputFormatOf(const std::filesystem::path& path)
+std::string lowerCaseExtension(const std::filesystem::path& path)
 {
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return extension;
+}
+
+const ImageFormat* outputFormatOf(const std::filesystem::path& path)
+{
+    const std::string extension = lowerCaseExtension(path);
     for (const ImageFormat& format : outputFormats())
         if (std::find(format.extensions.begin(), format.extensions.end(), extension) !=
             format.extensions.end())

@@ -16,6 +16,9 @@ struct ImageFormat {
 
 const std::vector<ImageFormat>& outputFormats();
 
+// `path`'s extension in lower case, with the dot: ".exr" for "A.EXR".
+std::string lowerCaseExtension(const std::filesystem::path& path);
+
 // The format `path`'s extension names (in any case), or nullptr.
 const ImageFormat* outputFormatOf(const std::filesystem::path& path);
 

@@ -94,8 +94,8 @@ void writeAllOrNothing(const std::vector<OutputImage>& images)
     try {
         for (std::size_t i = 0; i < images.size(); ++i) {
             temporaries.push_back(temporaryNameFor(images[i].path, i));
-            writeImageFile(temporaries.back(), images[i].path, *images[i].image,
-                           images[i].attributes);
+            writeImageFile(temporaries.back(), images[i].path, images[i].image,
+                           images[i].attributes, images[i].channelNames);
         }
     } catch (...) {
         removeTemporaries();

@@ -33,8 +33,10 @@ bool resolveToSameFile(const std::filesystem::path& a, const std::filesystem::pa
 
 struct OutputImage {
     std::filesystem::path path;
-    const Image* image = nullptr;
+    Image image;
     std::vector<ImageAttribute> attributes;
+    // Where the format names channels (EXR): one name per channel; empty, R, G, B (A).
+    std::vector<std::string> channelNames;
 };
 
 // Writes every image under a temporary name beside its destination (same folder, so the

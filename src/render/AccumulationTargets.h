@@ -1,6 +1,7 @@
 #pragma once
 #include "gl/Framebuffer.h"
 #include "gl/Texture.h"
+#include "render/Accumulation.h"
 
 #include <array>
 
@@ -15,6 +16,8 @@ namespace render {
 class AccumulationTargets {
 public:
     AccumulationTargets(int width, int height);
+    // Both sets holding `initial` (a resumed render's accumulation), its size.
+    explicit AccumulationTargets(const Accumulation& initial);
 
     struct Set {
         gl::Texture estimate;

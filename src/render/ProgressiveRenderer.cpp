@@ -166,6 +166,19 @@ void ProgressiveRenderer::resize(int width, int height)
     uploadAll();
 }
 
+void ProgressiveRenderer::resumeFrom(const Accumulation& accumulation)
+{
+    if (accumulation.width() != width() || accumulation.height() != height())
+        throw std::invalid_argument(
+            "cannot resume a " + std::to_string(accumulation.width()) + "x" +
+            std::to_string(accumulation.height()) + " accumulation in a " +
+            std::to_string(width()) + "x" + std::to_string(height()) + " render");
+    targets_ = AccumulationTargets(accumulation);
+    frames_ = 0;
+    samplesPerPixel_ = samplesTakenSpan(accumulation).most;
+    previewDivisor_ = 0;
+}
+
 void ProgressiveRenderer::restartAccumulation()
 {
     targets_ = AccumulationTargets(width(), height());
@@ -332,19 +345,15 @@ io::Image ProgressiveRenderer::radiance() const
 
 io::Image ProgressiveRenderer::sampleStatistics() const
 {
-    const io::Image estimate = readTarget(targets_.previous().estimate, 4);
-    const io::Image moments = readTarget(targets_.previous().moments, 4);
-    io::Image statistics(width(), height(), 3);
-    for (int y = 0; y < height(); ++y)
-        for (int x = 0; x < width(); ++x) {
-            const float count = estimate.at(x, y, 3);
-            const float sumSquares =
-                (moments.at(x, y, 0) + moments.at(x, y, 1) + moments.at(x, y, 2)) / 3.0f;
-            statistics.at(x, y, 0) = count;
-            statistics.at(x, y, 1) = moments.at(x, y, 3);
-            statistics.at(x, y, 2) = count > 1.0f ? sumSquares / (count * (count - 1.0f)) : 0.0f;
-        }
-    return statistics;
+    return render::sampleStatistics(accumulation());
+}
+
+Accumulation ProgressiveRenderer::accumulation() const
+{
+    Accumulation state;
+    state.estimate = readTarget(targets_.previous().estimate, 4);
+    state.moments = readTarget(targets_.previous().moments, 4);
+    return state;
 }
 
 std::pair<io::Image, io::Image> ProgressiveRenderer::accumulationTargets() const

@@ -1,6 +1,7 @@
 #pragma once
 #include "gl/VertexArray.h"
 #include "io/Image.h"
+#include "render/Accumulation.h"
 #include "render/AccumulationTargets.h"
 #include "render/PathTracerProgram.h"
 #include "render/ReloadDecision.h"
@@ -62,6 +63,15 @@ public:
     void setSettings(const RenderSettings& settings);
     void resize(int width, int height);
     const RenderSettings& settings() const { return settings_; }
+    // The camera the image is rendered from.
+    const scene::Camera& camera() const { return scene_.camera; }
+
+    // Goes on from `accumulation` (of this scene, size and settings: a saved render's)
+    // instead of from nothing: each pixel's next sample takes the next index of its sequence
+    // (shaders/modules/sampler.glsl), so the samples added are new ones, never those it
+    // holds. samplesPerPixel() becomes the most samples a pixel holds; pixels holding fewer
+    // catch up in the next frames. Throws std::invalid_argument for another size.
+    void resumeFrom(const Accumulation& accumulation);
 
     // One cheap picture while the view keeps changing: one path per pixel for a grid
     // `divisor` times coarser than the image, with at most `maxBounces` bounces. It replaces
@@ -80,6 +90,8 @@ public:
     // Per pixel: r = samples accumulated, g = samples discarded, b = variance of the mean
     // radiance (channel average).
     io::Image sampleStatistics() const;
+    // What every pixel has accumulated (render/Accumulation.h).
+    Accumulation accumulation() const;
     // The two accumulation targets as they are (RGBA each, top row first): in a shader built
     // with profileCounters, the work counted per pixel (shaders/modules/work_counters.glsl).
     std::pair<io::Image, io::Image> accumulationTargets() const;

@@ -25,12 +25,6 @@ protected:
 
 };
 
-std::string describe(const ProcessResult& result)
-{
-    return result.describeEnd() + "\n--- stdout:\n" + result.standardOutput + "--- stderr:\n" +
-           result.standardError;
-}
-
 // --- malformed scenes ---------------------------------------------------------------------
 
 struct MalformedScene {

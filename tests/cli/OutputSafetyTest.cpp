@@ -18,12 +18,6 @@ namespace {
 using namespace testing_support;
 namespace fs = std::filesystem;
 
-std::string describe(const ProcessResult& result)
-{
-    return result.describeEnd() + "\n--- stdout:\n" + result.standardOutput + "--- stderr:\n" +
-           result.standardError;
-}
-
 class Outputs : public ProgramInFolder {
 protected:
     std::string scene1() const { return (sourceDirectory() / "scenes" / "scene1.in").string(); }

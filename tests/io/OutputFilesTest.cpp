@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -108,8 +109,8 @@ TEST_F(OutputFiles, WhenTheSecondImageFailsNeitherIsWrittenAndTheOlderFileIsKept
     std::ofstream(folder_ / "a.exr") << "older";
     const io::Image good = gradient(3);
     const io::Image twoChannels = gradient(2);  // PFM holds one or three channels
-    EXPECT_THROW(io::writeAllOrNothing({{folder_ / "a.exr", &good, {}},
-                                        {folder_ / "b.pfm", &twoChannels, {}}}),
+    EXPECT_THROW(io::writeAllOrNothing({{folder_ / "a.exr", good, {}, {}},
+                                        {folder_ / "b.pfm", twoChannels, {}, {}}}),
                  std::runtime_error);
     EXPECT_EQ(contents(folder_ / "a.exr"), "older");
     EXPECT_EQ(files(), std::vector<std::string>{"a.exr"}) << "no temporary file is left";
@@ -118,7 +119,8 @@ TEST_F(OutputFiles, WhenTheSecondImageFailsNeitherIsWrittenAndTheOlderFileIsKept
 TEST_F(OutputFiles, BothImagesAreWrittenWhenBothSucceed)
 {
     const io::Image image = gradient(3);
-    io::writeAllOrNothing({{folder_ / "a.exr", &image, {}}, {folder_ / "b.pfm", &image, {}}});
+    io::writeAllOrNothing(
+        {{folder_ / "a.exr", image, {}, {}}, {folder_ / "b.pfm", image, {}, {}}});
     EXPECT_EQ(files(), (std::vector<std::string>{"a.exr", "b.pfm"}));
     EXPECT_EQ(io::readImage(folder_ / "a.exr").pixels, image.pixels);
     EXPECT_EQ(io::readImage(folder_ / "b.pfm").pixels, image.pixels);
@@ -162,6 +164,28 @@ TEST_F(OutputFiles, AttributesAreWrittenIntoFormatsThatHoldThem)
                   std::optional<std::string>("a test"))
             << name;
     }
+}
+
+TEST_F(OutputFiles, ChannelNamesAndAttributesComeBackFromAnExrAsWritten)
+{
+    const io::Image image = gradient(5);
+    const std::vector<std::string> names = {"R", "G", "B", "samples", "layer.detail"};
+    io::writeAllOrNothing({{folder_ / "a.exr", image, {{"raytracer:note", "a test"}}, names}});
+    const io::ImageFileContents file = io::readImageFile(folder_ / "a.exr");
+    ASSERT_EQ(file.image.channels, 5);
+    for (const std::string& name : names) {
+        const int index = file.channelIndex(name);
+        ASSERT_GE(index, 0) << "no channel " << name;
+        const int written = static_cast<int>(
+            std::find(names.begin(), names.end(), name) - names.begin());
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x)
+                EXPECT_EQ(file.image.at(x, y, index), image.at(x, y, written)) << name;
+    }
+    const auto note = std::find_if(file.attributes.begin(), file.attributes.end(),
+                                   [](const io::ImageAttribute& a) { return a.name == "raytracer:note"; });
+    ASSERT_NE(note, file.attributes.end());
+    EXPECT_EQ(note->value, "a test");
 }
 
 }  // namespace

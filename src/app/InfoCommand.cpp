@@ -1,0 +1,99 @@
+#include "app/InfoCommand.h"
+
+#include "app/RenderCommand.h"
+#include "io/ImageFile.h"
+#include "render/RenderMetadata.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <limits>
+#include <stdexcept>
+
+namespace app {
+
+namespace {
+
+void printLine(const std::string& label, const std::string& value)
+{
+    std::printf("%-33s %s\n", label.c_str(), value.c_str());
+}
+
+// "every pixel holds 64 samples (none discarded)" or "pixels hold 31 to 32 samples, 3
+// discarded in all", from the channels that count them, where the file has them.
+std::string perPixelSamples(const io::ImageFileContents& file)
+{
+    const int kept = file.channelIndex("samples");
+    const int discarded = file.channelIndex("samplesDiscarded");
+    if (kept < 0 || discarded < 0)
+        return "";
+    double fewest = std::numeric_limits<double>::max();
+    double most = 0.0;
+    double discardedInAll = 0.0;
+    for (int y = 0; y < file.image.height; ++y)
+        for (int x = 0; x < file.image.width; ++x) {
+            const double taken = file.image.at(x, y, kept) + file.image.at(x, y, discarded);
+            fewest = std::min(fewest, taken);
+            most = std::max(most, taken);
+            discardedInAll += file.image.at(x, y, discarded);
+        }
+    char text[160];
+    if (fewest == most)
+        std::snprintf(text, sizeof text, "every pixel holds %.0f (%.0f discarded in all)", most,
+                      discardedInAll);
+    else
+        std::snprintf(text, sizeof text, "pixels hold %.0f to %.0f (%.0f discarded in all)",
+                      fewest, most, discardedInAll);
+    return text;
+}
+
+}  // namespace
+
+int runInfo(const std::filesystem::path& path)
+{
+    const io::ImageFileContents file = io::readImageFile(path);
+    const std::optional<render::RenderMetadata> metadata =
+        render::metadataFromAttributes(file.attributes, path.string());
+    if (!metadata)
+        throw std::runtime_error(path.string() + " holds no metadata of this program (" +
+                                 file.format + "; PPM, PFM, HDR, JPEG and TIFF files hold none)");
+
+    std::string channels;
+    for (const std::string& name : file.channelNames)
+        channels += (channels.empty() ? "" : " ") + name;
+    printLine("file", path.string() + ": " + file.format + ", " +
+                          std::to_string(file.image.width) + "x" +
+                          std::to_string(file.image.height));
+    printLine("channels", channels);
+    printLine("scene", metadata->sceneFile);
+    printLine("scene SHA-256", metadata->sceneSha256);
+    printLine("camera", render::formatCamera(metadata->camera));
+    std::string samples = std::to_string(metadata->samplesPerPixel) + " per pixel";
+    const std::string pixels = perPixelSamples(file);
+    if (!pixels.empty())
+        samples += "; " + pixels;
+    printLine("samples", samples);
+    printLine("seeds", render::describeSeeds(metadata->sampleRanges));
+    std::string ranges;
+    for (const render::SampleRange& range : metadata->sampleRanges)
+        ranges += (ranges.empty() ? "" : "; ") + render::describeSampleRange(range);
+    printLine("sample ranges", ranges);
+    char seconds[64];
+    std::snprintf(seconds, sizeof seconds, "%.2f s%s", metadata->renderSeconds,
+                  metadata->mergedFrom.empty() ? "" : " (summed over the renders merged)");
+    printLine("render time", seconds);
+    printLine("interrupted", metadata->interrupted.empty() ? "no" : "yes: " + metadata->interrupted);
+    if (!metadata->mergedFrom.empty()) {
+        std::string files;
+        for (const std::string& name : metadata->mergedFrom)
+            files += (files.empty() ? "" : ", ") + name;
+        printLine("merged from", files);
+    }
+    printLine("program", render::describeProgram(*metadata));
+    for (const render::ImageSetting& setting : render::imageSettings())
+        printLine(setting.label, setting.text(metadata->settings) + "  (" + setting.option + ")");
+    return kExitSuccess;
+}
+
+}  // namespace app

@@ -1,0 +1,162 @@
+#include "app/MergeCommand.h"
+
+#include "app/RenderCommand.h"
+#include "app/RenderOutputs.h"
+#include "io/OutputFiles.h"
+#include "platform/ContextFactory.h"
+#include "render/AccumulationTargets.h"
+#include "render/RenderFile.h"
+#include "render/ToneMapper.h"
+#include "scene/FileLookup.h"
+
+#include <cstdio>
+#include <iostream>
+#include <stdexcept>
+
+namespace app {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Counts are stored as 32-bit floats (on the GPU and in the file), exact up to 2^24.
+constexpr double kLargestExactCount = 16777216.0;
+
+void refuseOutputsInOneFile(const MergeRequest& request)
+{
+    std::vector<std::pair<const char*, fs::path>> outputs = {{"OUT", request.output}};
+    if (request.picture)
+        outputs.push_back({"--png", *request.picture});
+    if (request.statisticsOutput)
+        outputs.push_back({"--stats-output", *request.statisticsOutput});
+    for (std::size_t i = 0; i < outputs.size(); ++i)
+        for (std::size_t j = i + 1; j < outputs.size(); ++j)
+            if (io::resolveToSameFile(outputs[i].second, outputs[j].second))
+                throw UsageError(std::string(outputs[j].first) + " " +
+                                 outputs[j].second.string() + " names the same file as " +
+                                 outputs[i].first + " " + outputs[i].second.string() +
+                                 ": give different files");
+}
+
+// Why the inputs cannot be merged, if they cannot: they must estimate one image (size,
+// scene, camera, settings, program build), and hold no sample twice.
+void refuseMismatches(const std::vector<fs::path>& paths,
+                      const std::vector<render::RenderFile>& renders)
+{
+    const render::RenderMetadata& first = renders.front().metadata;
+    for (std::size_t i = 1; i < renders.size(); ++i)
+        if (const auto difference = render::imageDifference(first, renders[i].metadata))
+            throw std::runtime_error(
+                "cannot merge " + paths[0].string() + " and " + paths[i].string() +
+                ": they differ in " + difference->what + ": " + difference->first + " and " +
+                difference->second + ", so their samples estimate different images");
+    for (std::size_t i = 0; i < renders.size(); ++i)
+        for (std::size_t j = i + 1; j < renders.size(); ++j)
+            if (const auto overlap = render::firstOverlap(renders[i].metadata.sampleRanges,
+                                                          renders[j].metadata.sampleRanges))
+                throw std::runtime_error(
+                    "cannot merge " + paths[i].string() + " and " + paths[j].string() +
+                    ": both hold samples of seed " + std::to_string(overlap->first.seed) +
+                    " with the same indices (" + render::describeSampleRange(overlap->first) +
+                    "; " + render::describeSampleRange(overlap->second) +
+                    "), the same paths twice: render shards with different --seed");
+}
+
+void refuseInexactCounts(const render::Accumulation& merged)
+{
+    for (int y = 0; y < merged.height(); ++y)
+        for (int x = 0; x < merged.width(); ++x)
+            if (merged.samplesTaken(x, y) > kLargestExactCount)
+                throw std::runtime_error(
+                    "cannot merge: a pixel would hold more than 16777216 samples, beyond what "
+                    "the 32-bit float counts hold exactly");
+}
+
+render::RenderMetadata mergedMetadata(const std::vector<fs::path>& paths,
+                                      const std::vector<render::RenderFile>& renders)
+{
+    render::RenderMetadata merged = renders.front().metadata;
+    merged.samplesPerPixel = 0;
+    merged.renderSeconds = 0.0;
+    merged.interrupted.clear();
+    merged.mergedFrom.clear();
+    std::vector<render::SampleRange> ranges;
+    for (std::size_t i = 0; i < renders.size(); ++i) {
+        const render::RenderMetadata& input = renders[i].metadata;
+        merged.samplesPerPixel += input.samplesPerPixel;
+        merged.renderSeconds += input.renderSeconds;
+        ranges.insert(ranges.end(), input.sampleRanges.begin(), input.sampleRanges.end());
+        merged.mergedFrom.push_back(paths[i].string());
+        if (!input.interrupted.empty())
+            merged.interrupted += (merged.interrupted.empty() ? "" : "; ") + paths[i].string() +
+                                  ": " + input.interrupted;
+    }
+    merged.sampleRanges = render::normalizedRanges(ranges);
+    return merged;
+}
+
+// The tone-mapped picture, by the renderer's own display pass in a headless context.
+io::Image toneMappedPicture(const render::Accumulation& accumulation)
+{
+    platform::ContextRequest request;
+    request.headless = true;
+    const auto context = platform::createContext(request);
+    const render::AccumulationTargets targets(accumulation);
+    const render::ToneMapper toneMapper(scene::FileLookup::dataDirectory() / "shaders");
+    const gl::VertexArray triangle;
+    return toneMapper.render(targets.previous().estimate, accumulation.width(),
+                             accumulation.height(), triangle);
+}
+
+}  // namespace
+
+int runMerge(const MergeRequest& request)
+{
+    refuseOutputsInOneFile(request);
+    std::vector<io::OutputRequest> outputs = {{request.output, io::OutputKind::Image}};
+    if (request.picture)
+        outputs.push_back({*request.picture, io::OutputKind::Image});
+    if (request.statisticsOutput)
+        outputs.push_back({*request.statisticsOutput, io::OutputKind::Statistics});
+    io::checkOutputsCanBeWritten(outputs);
+
+    std::vector<render::RenderFile> renders;
+    for (const fs::path& input : request.inputs) {
+        try {
+            renders.push_back(render::readRenderFile(input));
+        } catch (const std::exception& error) {
+            throw std::runtime_error(std::string("cannot merge: ") + error.what());
+        }
+    }
+    refuseMismatches(request.inputs, renders);
+
+    std::vector<const render::Accumulation*> parts;
+    for (const render::RenderFile& render : renders)
+        parts.push_back(&render.accumulation);
+    const render::Accumulation merged = render::combineAccumulations(parts);
+    refuseInexactCounts(merged);
+    const render::RenderMetadata metadata = mergedMetadata(request.inputs, renders);
+
+    std::vector<fs::path> images = {request.output};
+    if (request.picture)
+        images.push_back(*request.picture);
+    io::writeAllOrNothing(renderOutputs(images, request.statisticsOutput, merged, metadata,
+                                        [&] { return toneMappedPicture(merged); }));
+
+    char numbers[160];
+    std::snprintf(numbers, sizeof numbers, "%dx%d, %d spp", metadata.width, metadata.height,
+                  metadata.samplesPerPixel);
+    char seconds[64];
+    std::snprintf(seconds, sizeof seconds, "%.2f s of rendering", metadata.renderSeconds);
+    std::string line = "merged " + std::to_string(renders.size()) + " renders: " + numbers +
+                       " (seeds " + render::describeSeeds(metadata.sampleRanges) + "), " +
+                       seconds + " -> " + request.output.string();
+    for (std::size_t i = 1; i < images.size(); ++i)
+        line += " and " + images[i].string();
+    if (request.statisticsOutput)
+        line += " and " + request.statisticsOutput->string();
+    std::cout << line << std::endl;
+    return kExitSuccess;
+}
+
+}  // namespace app

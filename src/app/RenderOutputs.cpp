@@ -1,0 +1,50 @@
+#include "app/RenderOutputs.h"
+
+#include "app/BuildInfo.h"
+#include "io/ImageFile.h"
+#include "io/ImageFormats.h"
+#include "render/RenderFile.h"
+
+
+namespace app {
+
+render::RenderMetadata describeRender(const std::filesystem::path& sceneFile,
+                                      const std::string& sceneSha256,
+                                      const render::ProgressiveRenderer& renderer)
+{
+    render::RenderMetadata metadata;
+    metadata.width = renderer.width();
+    metadata.height = renderer.height();
+    metadata.sceneFile = sceneFile.string();
+    metadata.sceneSha256 = sceneSha256;
+    metadata.camera = renderer.camera();
+    metadata.settings = renderer.settings();
+    metadata.samplesPerPixel = renderer.samplesPerPixel();
+    metadata.sampleRanges = {{renderer.settings().seed, 0, renderer.samplesPerPixel()}};
+    metadata.program = programName();
+    metadata.gitCommit = gitCommit();
+    return metadata;
+}
+
+std::vector<io::OutputImage> renderOutputs(
+    const std::vector<std::filesystem::path>& images,
+    const std::optional<std::filesystem::path>& statistics,
+    const render::Accumulation& accumulation, const render::RenderMetadata& metadata,
+    const std::function<io::Image()>& picture)
+{
+    const std::vector<io::ImageAttribute> attributes = render::metadataAttributes(metadata);
+    std::vector<io::OutputImage> outputs;
+    for (const std::filesystem::path& path : images) {
+        if (io::lowerCaseExtension(path) == ".exr")
+            outputs.push_back(render::accumulationOutput(path, accumulation, metadata));
+        else if (io::holdsLinearRadiance(path))
+            outputs.push_back({path, render::meanRadiance(accumulation), attributes, {}});
+        else
+            outputs.push_back({path, picture(), attributes, {}});
+    }
+    if (statistics)
+        outputs.push_back(render::statisticsOutput(*statistics, accumulation, metadata));
+    return outputs;
+}
+
+}  // namespace app
