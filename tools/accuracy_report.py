@@ -434,24 +434,16 @@ def settings_reading(rows, digests, timing_noise):
                               number(r, "brightness_bias")) for r in tight), reverse=True)
             biased = [r["scene"] for r in tight if judge(r) == "bias"]
             blocks.append(
-                f"**The default hit tolerance is itself a bias.** Tightening it from "
+                f"**Tighter tolerances change the image.** Tightening the hit tolerance from "
                 f"{fmt(defaults[0])} to {fmt(tightest)} footprints changes the image visibly in "
                 f"{len(biased)} of {len(tight)} scenes (brightness by "
                 + ", ".join(f"{percent(v)} in {n}" for _, n, v in shifts[:3])
-                + "); a tolerance-free image lies at least that far from the default's. The "
-                "cause is in `shaders/modules/sphere_tracing.glsl`: a march stops, and counts as "
-                "a hit, as soon as the distance falls below the tolerance, so a ray that passes "
-                "within tolerance × footprint of an object hits it and every silhouette is "
-                "dilated by that fraction of a pixel (bright emitters' outlines change the "
-                "image sum most); shadow rays likewise see occluders dilated by the tolerance at "
-                "the point they leave, and paths leave each surface that far off it. Camera and "
-                "specular rays that truly meet a surface are moved along the ray onto it "
-                "(`intersectAlongRay`), so the tolerance does not misplace what they see, only "
-                "the near misses. The dilation is a fixed fraction of a pixel, so its share of "
-                "the picture, and this bias, shrink as the resolution grows. Shorter steps "
-                "(step-scale below 1) follow a grazing ray more closely and so meet the "
-                "tolerance more often: the small differences step-scale makes come from the "
-                "same dilation.")
+                + "). This sweep compares every value with a reference made with the default "
+                "tolerance, so it shows how far each value moves the image, not which image is "
+                "right: a bias the default shares with its reference is invisible here. The "
+                "section *Per pixel, against exact intersection* judges the tolerance, the step "
+                "limit and over-relaxation against geometry met in closed form; where the two "
+                "disagree, that section is right.")
 
     # A firefly in the default-settings render inflates the noise every value of its scene
     # is judged against; say so where it happened.
@@ -924,6 +916,16 @@ def write_report(args):
         "`build-accuracy/accuracy-cache/` (reused while the scene, shaders and settings are "
         "unchanged; `ACCURACY_REFRESH=1` renders them again), writes the CSVs and plots to "
         "`docs/accuracy/` and this page. Its header documents every variable.\n")
+    # The per-pixel sections (tools/per_pixel_report.py) are written by another tool; keep
+    # them, before the convergence section.
+    begin, end = "<!-- per-pixel:begin -->", "<!-- per-pixel:end -->"
+    if os.path.exists(args.markdown):
+        previous = open(args.markdown).read()
+        if begin in previous and end in previous:
+            kept = previous[previous.index(begin):previous.index(end) + len(end)] + "\n"
+            at = next((i for i, line in enumerate(out) if line.startswith("## Convergence")),
+                      len(out))
+            out.insert(at, kept)
     with open(args.markdown, "w") as file:
         file.write("\n".join(out))
 

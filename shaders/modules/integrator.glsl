@@ -9,8 +9,7 @@ uniform int uRussianRouletteDepth;  // scattering events that roulette never end
 // Smallest cosine between wo and the facing normal (see Surface.facingNormal).
 const float kMinimumViewCosine = 1e-4;
 
-Surface surfaceAt(int object, vec3 p, vec3 normal, vec3 wo, float insideSign, float footprint,
-                  float tolerance)
+Surface surfaceAt(int object, vec3 p, vec3 normal, vec3 wo, float insideSign, float footprint)
 {
     int finish = objectFinish(object);
     Surface s;
@@ -22,7 +21,7 @@ Surface surfaceAt(int object, vec3 p, vec3 normal, vec3 wo, float insideSign, fl
     if (cosView < kMinimumViewCosine)
         facing = normalize(facing + (kMinimumViewCosine - cosView) * wo);
     s.facingNormal = facing;
-    s.color = pigmentColor(objectPigment(object), p, normal, footprint, tolerance);
+    s.color = pigmentColor(objectPigment(object), p, normal, footprint, 0.0);
     s.emission = finishEmission(finish);
     s.phongExponent = finishPhongExponent(finish);
     s.material = finishMaterial(finish);
@@ -99,7 +98,7 @@ bool continuePath(inout PathState path)
     float footprint = hit.footprint;
     float tolerance = hit.tolerance;
     vec3 wo = -direction;
-    Surface s = surfaceAt(hit.object, p, hit.normal, wo, insideSign, footprint, tolerance);
+    Surface s = surfaceAt(hit.object, p, hit.normal, wo, insideSign, footprint);
 
 #if HAS_SPHERE_LIGHTS
     // Emission, seen from outside the sphere, only along rays that truly meet it: the march

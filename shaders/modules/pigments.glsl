@@ -44,15 +44,22 @@ vec3 triplanarPigment(vec3 p, vec3 normal, float layer, float tileSize, float fo
 #endif
 
 // The pigment's colour at surface point p with outward normal n; `footprint` is the ray
-// cone's width there and `tolerance` the hit tolerance.
-vec3 pigmentColor(int pigment, vec3 p, vec3 n, float footprint, float tolerance)
+// cone's width there and `offSurface` how far outside the surface p may lie (0 for a point
+// met on it).
+vec3 pigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface)
 {
     vec4 header = uPigments[3 * pigment];
     vec3 first = uPigments[3 * pigment + 1].rgb;
     int kind = int(header.x);
 #if HAS_CHECKER_PIGMENT
     if (kind == PIGMENT_CHECKER) {
-        float inset = max(1e-4 * header.y, 2.0 * tolerance);
+        // A hair, above float rounding at p, and never a hit tolerance for a point on the
+        // surface: an inset that long moves the lookup across cube boundaries on a tilted
+        // face, and a wall whose plane runs along cube edges (x - y = 10) showed bands of
+        // the other colour half a pixel wide at every one of them.
+        vec3 magnitude = abs(p);
+        float rounding = 1e-6 * (1.0 + max(max(magnitude.x, magnitude.y), magnitude.z));
+        float inset = max(max(1e-4 * min(header.y, 1.0), rounding), 2.0 * offSurface);
         return checkerPigment(p - inset * n, first, uPigments[3 * pigment + 2].rgb, header.y);
     }
 #endif

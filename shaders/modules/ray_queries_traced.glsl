@@ -250,7 +250,7 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
             return vec3(0.0);
 #if HAS_NULL_INTERFACES
         transmittance *= pigmentColor(objectPigment(wall.object), origin + wall.t * wi, -wi,
-                                      0.0, tolerance);
+                                      0.0, 0.0);
         from = wall.t + tolerance;
 #endif
     }

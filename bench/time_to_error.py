@@ -1,0 +1,75 @@
+#!/usr/bin/python3
+"""Tables of bench/time-to-error.sh: relative RMSE against the exact reference and the time
+to reach 5 %, 2 % and 1 %, ours against the original. Reads the script's results.csv; the
+exact references are SCENE-exact-11.pfm and SCENE-exact-12.pfm beside it."""
+
+import csv
+import math
+import os
+import sys
+
+import numpy as np
+
+
+def read_pfm(path):
+    with open(path, "rb") as file:
+        header = file.readline().strip()
+        width, height = (int(v) for v in file.readline().split())
+        scale = float(file.readline())
+        channels = 3 if header == b"PF" else 1
+        data = np.frombuffer(file.read(), dtype="<f4" if scale < 0 else ">f4")
+    return data.reshape(height, width, channels).astype(np.float64)
+
+
+def time_to(points, target):
+    """Seconds at which the error falls to `target`, log-log interpolated; None if never."""
+    for (t0, e0), (t1, e1) in zip(points, points[1:]):
+        if e0 >= target >= e1:
+            f = (math.log(target) - math.log(e0)) / (math.log(e1) - math.log(e0))
+            return math.exp(math.log(t0) + f * (math.log(t1) - math.log(t0)))
+    if points and points[0][1] <= target:
+        return points[0][0]
+    return None
+
+
+def main():
+    results, folder = sys.argv[1], sys.argv[2]
+    rows = list(csv.DictReader(open(results)))
+    targets = (0.05, 0.02, 0.01)
+    summary = []
+    for scene in sorted({r["scene"] for r in rows}):
+        references = [read_pfm(os.path.join(folder, f"{scene}-exact-{s}.pfm")) for s in (11, 12)]
+        reference = 0.5 * (references[0] + references[1])
+        mean = reference.mean()
+        floor = math.sqrt(np.mean((references[0] - references[1]) ** 2) / 4.0) / mean
+        print(f"{scene} (the reference's own noise: rel RMSE {floor:.4f})\n")
+        print("| spp | original s | original rel RMSE | ours s | ours rel RMSE |")
+        print("|---|---|---|---|---|")
+        curves = {}
+        for program in ("original", "ours"):
+            mine = sorted((r for r in rows if r["scene"] == scene and r["program"] == program),
+                          key=lambda r: int(r["spp"]))
+            curves[program] = [(float(r["seconds"]),
+                                math.sqrt(np.mean((read_pfm(r["image"]) - reference) ** 2))
+                                / mean, int(r["spp"])) for r in mine]
+        for (to, eo, n), (tu, eu, _) in zip(curves["original"], curves["ours"]):
+            print(f"| {n} | {to:.2f} | {eo:.4f} | {tu:.2f} | {eu:.4f} |")
+        print()
+        cells = [scene]
+        for target in targets:
+            for program in ("original", "ours"):
+                t = time_to([(t, e) for t, e, _ in curves[program]], target)
+                cells.append("never" if t is None else f"{t:.2f} s")
+        summary.append(cells)
+    header = ["scene"] + [f"{p} to {int(100 * t)} %" for t in targets
+                          for p in ("original", "ours")]
+    print("| " + " | ".join(header) + " |")
+    print("|" + "---|" * len(header))
+    for cells in summary:
+        print("| " + " | ".join(cells) + " |")
+    print("\n(\"never\": the error stays above the target at the largest sample count measured; "
+          "a curve that flattens there is bias.)")
+
+
+if __name__ == "__main__":
+    main()
