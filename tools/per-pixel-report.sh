@@ -103,15 +103,20 @@ for name in "${classic[@]}" "${figures[@]}"; do
   fi
 done
 
-# The flat lit plane at 1 and 4 spp, each sampler.
+# The flat lit plane at 1 and 4 spp, each sampler, and a 1024-spp render to subtract.
 for sampler in sobol independent; do
   for spp in 1 4; do
-    out="$cache/flat-plane-$sampler-$spp.png"
+    out="$cache/flat-plane-$sampler-$spp.exr"
     [ -f "$out" ] && [ -z "${PER_PIXEL_REFRESH:-}" ] && continue
     "$program" "$root/bench/scenes/flat-lit-plane.in" 320 240 --spp "$spp" --quiet \
       --headless --sampler "$sampler" --output "$out"
   done
 done
+reference="$cache/flat-plane-reference.exr"
+if [ ! -f "$reference" ] || [ -n "${PER_PIXEL_REFRESH:-}" ]; then
+  "$program" "$root/bench/scenes/flat-lit-plane.in" 320 240 --spp 1024 --quiet --headless \
+    --sampler independent --seed 99 --output "$reference"
+fi
 rm -f "$cache/probe.exr"
 
 /usr/bin/python3 "$root/tools/per_pixel_report.py" "$cache" "$root/docs/ACCURACY.md" \

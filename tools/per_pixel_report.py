@@ -326,6 +326,23 @@ def exact_section(cache, scenes, image_dir, link_dir, args):
     return lines
 
 
+def flat_plane_image(rgb, reference, path):
+    """Writes the flat plane's noise (the render less a 1024-spp render of another seed) at
+    full contrast; returns its correlation with its neighbours 1 and 2 pixels across and
+    down."""
+    weights = np.array([0.2126, 0.7152, 0.0722])
+    residual = rgb @ weights - reference @ weights
+    spread = 1.4826 * np.median(np.abs(residual - np.median(residual))) or 1.0
+    plt.imsave(path, np.clip(residual / spread, -3, 3), cmap="gray", vmin=-3, vmax=3)
+
+    def correlation(a, b):
+        return float(np.corrcoef(a.ravel(), b.ravel())[0, 1])
+    return (correlation(residual[:, :-1], residual[:, 1:]),
+            correlation(residual[:-1, :], residual[1:, :]),
+            correlation(residual[:, :-2], residual[:, 2:]),
+            correlation(residual[:-2, :], residual[2:, :]))
+
+
 def convergence_plot(cache, scenes, path):
     columns = 4
     rows = math.ceil(len(scenes) / columns)
@@ -409,14 +426,18 @@ def sampler_section(cache, scenes, image_dir, link_dir, args):
                                f"**{totals['sobol'] / totals['independent']:.2f}**"])
     plot = "sampler-convergence.png"
     convergence_plot(cache, scenes, os.path.join(image_dir, plot))
-    flats = []
+    flats, flat_rows = [], []
+    flat_reference = os.path.join(cache.folder, "flat-plane-reference.exr")
     for sampler in ("sobol", "independent"):
         for spp in (1, 4):
-            source = os.path.join(cache.folder, f"flat-plane-{sampler}-{spp}.png")
-            if os.path.exists(source):
+            source = os.path.join(cache.folder, f"flat-plane-{sampler}-{spp}.exr")
+            if os.path.exists(source) and os.path.exists(flat_reference):
                 name = f"flat-plane-{sampler}-{spp}spp.png"
-                shutil.copyfile(source, os.path.join(image_dir, name))
+                correlations = flat_plane_image(read_exr_rgb(source),
+                                                read_exr_rgb(flat_reference),
+                                                os.path.join(image_dir, name))
                 flats.append((f"{sampler}, {spp} spp", name))
+                flat_rows.append([sampler, spp] + [f"{c:+.3f}" for c in correlations])
     geometric = math.exp(np.mean(np.log(ratios_256))) if ratios_256 else float("nan")
     lines = [
         "## Sobol points against independent samples",
@@ -471,12 +492,18 @@ def sampler_section(cache, scenes, image_dir, link_dir, args):
         "",
         "A flat Lambertian floor under a sphere light and a grey sky "
         "(`bench/scenes/flat-lit-plane.in`), 320x240: each pixel integrates nearly the same "
-        "function, so any pattern shared between pixels would show. None does: the Sobol "
-        "images are white noise, as the independent ones are, only less of it.",
+        "function, so any pattern shared between pixels would show. Each image shows the "
+        "render's luminance less that of a 1024-spp render (independent samples, another "
+        "seed), over its robust spread (1.4826 median absolute deviations), saturated at +-3: noise at full "
+        "contrast. The table gives the correlation of that residual between neighbours at "
+        "one and two pixels' distance, across and down: for white noise they are 0 within "
+        f"about +-{2 / math.sqrt(320 * 240):.3f} (two standard errors).",
         "",
     ]
     lines += [" ".join(f"![{label}]({link_dir}/{name})" for label, name in flats), "",
-              "(left to right: " + ", ".join(label for label, _ in flats) + ")", ""]
+              "(left to right: " + ", ".join(label for label, _ in flats) + ")", "",
+              table(["sampler", "spp", "1 across", "1 down", "2 across", "2 down"],
+                    flat_rows), ""]
     return lines
 
 
