@@ -86,6 +86,9 @@ bool InteractiveSession::reachedEnd(Clock::time_point start) const
 
 bool InteractiveSession::run()
 {
+    if (!line_.quiet)
+        std::cout << "raytracer: Tab shows the statistics panel, with the settings and the keys"
+                  << std::endl;
     const Clock::time_point start = Clock::now();
     restartClock();
     lastViewChange_ = start - std::chrono::seconds(1);
