@@ -276,6 +276,12 @@ bool InteractiveSession::reloadChangedFiles()
         fileScene_ = std::move(edited);
         sceneSha256_ = std::move(editedSha256);
         watcher_.watch(filesOfScene(line_.scene, fileScene_));
+        if (decision.changesNothing) {
+            setStatus("the edit changes nothing on screen (a comment, spacing): the "
+                      "accumulation goes on",
+                      false);
+            return false;
+        }
         char text[200];
         if (decision.rebuildShader) {
             std::snprintf(text, sizeof text,

@@ -62,6 +62,21 @@ TEST(InteractiveRenderer, AValuesEditReuploadsAndRendersAsTheEditedSceneLoadedAf
         << "same program, same uniforms, same seed: the same image";
 }
 
+TEST(InteractiveRenderer, AnEditThatChangesNothingOnScreenKeepsTheAccumulation)
+{
+    render::ProgressiveRenderer renderer(sceneFromText(sceneText()), 48, 36, settingsWithSeed(5));
+    renderSamples(renderer, 4);
+    const io::Image before = renderer.radiance();
+    // The same scene with a comment and other spacing: the same code, the same uniforms.
+    const render::ReloadDecision decision =
+        renderer.setScene(sceneFromText("# saved again\n" + sceneText("0.80 0.1  0.1")));
+    EXPECT_TRUE(decision.changesNothing);
+    EXPECT_EQ(renderer.samplesPerPixel(), 4) << "nothing changed, so the samples are kept";
+    EXPECT_EQ(largestDifference(renderer.radiance(), before), 0.0);
+    renderSamples(renderer, 6);
+    EXPECT_EQ(renderer.samplesPerPixel(), 6) << "and the accumulation goes on";
+}
+
 TEST(InteractiveRenderer, AnEditThatDoesNotCompileLeavesTheRendererAsItWas)
 {
     const fs::path folder = fs::temp_directory_path() /

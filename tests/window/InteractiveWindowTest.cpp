@@ -147,6 +147,24 @@ protected:
                (samplesInTitle(after) >= 0 && samplesInTitle(after) < samplesInTitle(before));
     }
 
+    // Watches the title for `seconds`: returns the first title whose sample count fell
+    // below the one before it (the accumulation restarted) or that says the scene was
+    // reloaded, or else the last title read.
+    std::string firstRestartWithin(double seconds)
+    {
+        int previous = samplesInTitle(windowTitle(window_));
+        return waitForTitle(
+            window_,
+            [&previous](const std::string& title) {
+                const int samples = samplesInTitle(title);
+                const bool restarted =
+                    samples < previous || title.find("reloaded") != std::string::npos;
+                previous = samples;
+                return restarted;
+            },
+            seconds);
+    }
+
     // Closes the window with Escape and returns how the program ended.
     ProcessResult close()
     {
@@ -269,6 +287,29 @@ TEST_F(InteractiveWindow, EditingAColourChangesThePictureWithoutARecompile)
     const ChannelMeans blue = meanColour(captureWindow(window_));
     EXPECT_LT(blue.red, red.red - 0.02) << "the sphere turned from red to blue";
     EXPECT_GT(blue.blue, red.blue + 0.02) << "the sphere turned from red to blue";
+}
+
+TEST_F(InteractiveWindow, TouchingOrSavingTheSceneUnchangedKeepsTheAccumulation)
+{
+    writeScene(sceneText(kRed));
+    start();
+    ASSERT_GE(samplesInTitle(waitForSamples(8)), 8);
+    // Each change is left a second, four times the watcher's polling period.
+    fs::last_write_time(folder_ / "scene.in",
+                        fs::last_write_time(folder_ / "scene.in") + std::chrono::seconds(5));
+    std::string title = firstRestartWithin(1.0);
+    EXPECT_EQ(title.find("reloaded"), std::string::npos) << "touched: " << title;
+    EXPECT_GE(samplesInTitle(title), 8) << "touched: the accumulation restarted: " << title;
+    writeScene(sceneText(kRed));
+    title = firstRestartWithin(1.0);
+    EXPECT_EQ(title.find("reloaded"), std::string::npos) << "saved unchanged: " << title;
+    EXPECT_GE(samplesInTitle(title), 8) << "saved unchanged: the accumulation restarted: "
+                                        << title;
+    // Another file, the same scene: read, found to change nothing, and said so.
+    writeScene("# a comment\n" + sceneText(kRed));
+    const std::string commented = waitForTitleWith("changes nothing", 5.0);
+    EXPECT_NE(commented.find("changes nothing"), std::string::npos) << commented;
+    EXPECT_GE(samplesInTitle(commented), 8) << "a comment added: " << commented;
 }
 
 TEST_F(InteractiveWindow, ASyntaxErrorKeepsTheWindowAndShowsWhere)
