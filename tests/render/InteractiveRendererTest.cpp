@@ -150,6 +150,73 @@ TEST(InteractiveRenderer, ExposureBrightensThePictureAndLeavesTheRadiance)
     EXPECT_GT(sumBright, 1.2 * sumNormal);
 }
 
+double meanRadiance(const io::Image& image)
+{
+    double sum = 0.0;
+    for (float value : image.pixels)
+        sum += value;
+    return sum / static_cast<double>(image.pixels.size());
+}
+
+// The window's renderer: the environment read from a uniform, so that the panel can switch it.
+render::RenderSettings windowSettings(std::uint64_t seed)
+{
+    render::RenderSettings settings = settingsWithSeed(seed);
+    settings.switchableEnvironment = true;
+    return settings;
+}
+
+// The panel's settings (hit tolerance, max bounces, the environment) go through setSettings:
+// each restarts the accumulation and changes the picture, and setting it back gives the
+// first picture bit for bit, so nothing else moved.
+TEST(InteractiveRenderer, EachPanelSettingChangesThePictureAndSettingItBackRestoresIt)
+{
+    const render::RenderSettings initial = windowSettings(6);
+    render::ProgressiveRenderer renderer(sceneFromText(sceneText()), 48, 36, initial);
+    renderSamples(renderer, 4);
+    const io::Image base = renderer.radiance();
+
+    auto renderWith = [&](const render::RenderSettings& settings) {
+        renderer.setSettings(settings);
+        EXPECT_EQ(renderer.samplesPerPixel(), 0) << "a new setting restarts the accumulation";
+        renderSamples(renderer, 4);
+        return renderer.radiance();
+    };
+    render::RenderSettings noEnvironment = initial;
+    noEnvironment.environmentLight = false;
+    EXPECT_LT(meanRadiance(renderWith(noEnvironment)), 0.9 * meanRadiance(base))
+        << "without the sky only the point light lights the scene";
+    EXPECT_EQ(largestDifference(renderWith(initial), base), 0.0) << "the environment back on";
+
+    render::RenderSettings oneBounce = initial;
+    oneBounce.maxBounces = 1;
+    EXPECT_LT(meanRadiance(renderWith(oneBounce)), meanRadiance(base))
+        << "one bounce leaves out the light of the later ones";
+    EXPECT_EQ(largestDifference(renderWith(initial), base), 0.0) << "16 bounces again";
+
+    render::RenderSettings looseHits = initial;
+    looseHits.hitTolerance = 4.0f;
+    EXPECT_GT(largestDifference(renderWith(looseHits), base), 0.0)
+        << "a hit tolerance of 4 pixels moves the silhouettes";
+    EXPECT_EQ(largestDifference(renderWith(initial), base), 0.0) << "0.25 pixels again";
+}
+
+TEST(InteractiveRenderer, PanelSettingsRenderAsTheSameSettingsGivenAtTheStart)
+{
+    render::RenderSettings tuned = windowSettings(7);
+    tuned.environmentLight = false;
+    tuned.maxBounces = 2;
+    tuned.hitTolerance = 1.0f;
+    render::ProgressiveRenderer renderer(sceneFromText(sceneText()), 48, 36, windowSettings(7));
+    renderSamples(renderer, 2);
+    renderer.setSettings(tuned);
+    renderSamples(renderer, 4);
+    render::ProgressiveRenderer fresh(sceneFromText(sceneText()), 48, 36, tuned);
+    renderSamples(fresh, 4);
+    EXPECT_EQ(largestDifference(renderer.radiance(), fresh.radiance()), 0.0)
+        << "the same program, uniforms and seed: the same image";
+}
+
 // Two renders of different seeds differ by sqrt(2) times the RMS error of each, so the
 // estimate from one render's variance must predict the RMS distance between them.
 // The relative RMS distance between two renders with different seeds, over sqrt(2): the
