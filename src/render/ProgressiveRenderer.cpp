@@ -108,8 +108,9 @@ ReloadDecision ProgressiveRenderer::setScene(const scene::Scene& original,
     scene::Scene scene = scene::dropInvisibleObjects(original);
     SceneShaderCode code = generateSceneShaderCode(scene, shaderBuild(settings_));
     SceneUniforms uniforms = packSceneUniforms(scene, code);
-    const ReloadDecision decision =
-        decideReload(code_, code, uniforms_.textureLayers, uniforms.textureLayers, changedFiles);
+    const ReloadDecision decision = decideReload(code_, uniforms_, code, uniforms, changedFiles);
+    if (decision.changesNothing)
+        return decision;
     // Everything that can fail comes first: until the new program and textures exist, the
     // renderer keeps the old ones.
     std::unique_ptr<PathTracerProgram> program =

@@ -48,11 +48,12 @@ public:
 
     // Replaces the scene: if its shader code is unchanged (only values differ) the uniforms
     // are re-uploaded; otherwise the shader is rebuilt (render/ReloadDecision.h decides).
-    // `changedFiles`: files changed on disk since the scene shown was loaded; a user SDF file
-    // among them rebuilds the shader, a texture reloads the textures. Either way
-    // accumulation restarts. Returns what was redone. When the new shader does not compile
-    // or a texture cannot be read it throws, and the renderer is as it was: same shader,
-    // same scene, same image.
+    // `changedFiles`: files whose bytes changed on disk since the scene shown was loaded; a
+    // user SDF file among them rebuilds the shader, a texture reloads the textures. Either
+    // way accumulation restarts, unless nothing the GPU is given differs (changesNothing: a
+    // comment edited, say), when the renderer goes on as it was. Returns what was redone.
+    // When the new shader does not compile or a texture cannot be read it throws, and the
+    // renderer is as it was: same shader, same scene, same image.
     ReloadDecision setScene(const scene::Scene& scene,
                             const std::vector<std::filesystem::path>& changedFiles = {});
 

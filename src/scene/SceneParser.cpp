@@ -529,11 +529,12 @@ private:
         user.name = word;
         const auto found = lookup_.findUserSdf(word);
         if (!found)
-            failAt(type, "an object type, or a user SDF with a shader file " + word +
-                             ".glsl (looked in " + joinFolders(lookup_.shaderFolders()) + ")");
+            failAt(type, "an object type, or a user SDF with a shader file " +
+                             shownToken(word) + ".glsl (looked in " +
+                             joinFolders(lookup_.shaderFolders()) + ")");
         user.sourcePath = *found;
         readUserSdfDeclarations(user);
-        user.position = vector3(word + " position");
+        user.position = vector3(shownToken(word) + " position");
         return {user, std::nullopt};
     }
 
