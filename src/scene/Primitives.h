@@ -262,7 +262,44 @@ struct Primitive<Disk> {
     }
 };
 
+// A box whose edges and corners are rounded with `radius`: the set of points within `radius`
+// of the box shrunk by `radius`, so that it still fits the box of `halfExtents`.
+struct RoundedBox {
+    glm::vec3 center{0.0f};
+    glm::vec3 halfExtents{1.0f};
+    float radius = 0.0f;
+};
+
+template <>
+struct Primitive<RoundedBox> {
+    static constexpr const char* keyword = "rounded_box";
+    static constexpr const char* distance = "sdRoundedBox(p - $0.xyz, $1.xyz, $0.w)";
+    static RoundedBox read(TokenCursor& in)
+    {
+        RoundedBox box;
+        box.center = in.vector3("rounded box centre");
+        box.halfExtents.x = in.positiveNumber("rounded box half-extent x");
+        box.halfExtents.y = in.positiveNumber("rounded box half-extent y");
+        box.halfExtents.z = in.positiveNumber("rounded box half-extent z");
+        const std::size_t radiusToken = in.mark();
+        box.radius = in.numberAtLeast("rounded box edge radius", 0.0f);
+        const float smallest = glm::min(box.halfExtents.x, glm::min(box.halfExtents.y, box.halfExtents.z));
+        if (box.radius > smallest)
+            in.failAtMark(radiusToken, "an edge radius of at most the smallest half-extent, " +
+                                           TokenCursor::formatNumber(smallest));
+        return box;
+    }
+    static ShapeBound bound(const RoundedBox& box)
+    {
+        return finiteBound(box.center, glm::length(box.halfExtents));
+    }
+    static std::array<glm::vec4, 2> parameters(const RoundedBox& box)
+    {
+        return {glm::vec4(box.center, box.radius), glm::vec4(box.halfExtents, 0.0f)};
+    }
+};
+
 // Every primitive kind, in the order of their codes.
-using PrimitiveTypes = TypeList<Sphere, Polyhedron, Box, Torus, Cone, Cylinder, Disk>;
+using PrimitiveTypes = TypeList<Sphere, Polyhedron, Box, Torus, Cone, Cylinder, Disk, RoundedBox>;
 
 }  // namespace scene
