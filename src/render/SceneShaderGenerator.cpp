@@ -582,7 +582,6 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
     const int lightCount =
         static_cast<int>(scene.pointLights.size() + sphereLights(scene).size());
     std::ostringstream out;
-    define(out, "SHADER_SPECIALIZED_SHAPES", specialized ? 1 : 0);
     define(out, "OBJECT_COUNT", static_cast<int>(scene.objects.size()));
     define(out, "OBJECT_ARRAY_SIZE", std::max<int>(1, scene.objects.size()));
     define(out, "SHAPE_PARAMETER_ARRAY_SIZE", std::max<int>(1, code.shapeParameters.size()));
@@ -592,9 +591,6 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
     define(out, "FINISH_ARRAY_SIZE", std::max<int>(1, scene.finishes.size()));
     define(out, "LIGHT_COUNT", lightCount);
     define(out, "LIGHT_ARRAY_SIZE", std::max(1, lightCount));
-    define(out, "HAS_TRANSFORMS", f.transforms ? 1 : 0);
-    define(out, "HAS_USER_SDFS", f.userSdfs.empty() ? 0 : 1);
-    define(out, "HAS_LAMBERTIAN", f.has(MaterialKind::Lambertian) ? 1 : 0);
     define(out, "HAS_BLINN_PHONG", f.has(MaterialKind::BlinnPhong) ? 1 : 0);
     define(out, "HAS_MIRROR", f.has(MaterialKind::Mirror) ? 1 : 0);
     define(out, "HAS_DIELECTRIC", f.has(MaterialKind::Dielectric) ? 1 : 0);
