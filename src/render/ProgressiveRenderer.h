@@ -6,6 +6,7 @@
 #include "render/PathTracerProgram.h"
 #include "render/ReloadDecision.h"
 #include "render/RenderSettings.h"
+#include "render/ScenePreparation.h"
 #include "render/SceneUniforms.h"
 #include "render/TextureArrayLoader.h"
 #include "render/ToneMapper.h"
@@ -106,7 +107,6 @@ public:
     void setExposure(float exposure) { exposure_ = exposure; }
     float exposure() const { return exposure_; }
 
-    const std::string& fragmentSource() const { return program_->fragmentSource(); }
     const scene::SceneFeatures& features() const { return code_.features; }
     double compileSeconds() const { return program_->compileSeconds(); }
     // Duration of the first frame, which includes the driver's code generation.
@@ -115,6 +115,8 @@ public:
     double lastSecondsPerSample() const { return lastSecondsPerSample_; }
 
 private:
+    ProgressiveRenderer(PreparedScene prepared, int width, int height,
+                        const RenderSettings& settings);
     void uploadAll();
     void generateDriverCode();
     void restartAccumulation();
