@@ -428,15 +428,14 @@ std::string fileBytes(const fs::path& path)
 std::string referenceKey(const scene::Scene& parsed, const render::RenderSettings& settings,
                          int width, int height, int samplesPerPixel)
 {
-    const scene::Scene scene = scene::dropInvisibleObjects(parsed);
-    const render::SceneShaderCode code =
-        render::generateSceneShaderCode(scene, render::shaderBuild(settings));
-    const render::SceneUniforms uniforms = render::packSceneUniforms(scene, code);
-    const fs::path shaders = scene::FileLookup::dataDirectory() / "shaders";
+    const render::PreparedScene prepared = render::prepareScene(
+        parsed, render::shaderBuild(settings), render::defaultShaderDirectory());
+    const render::SceneShaderCode& code = prepared.code;
+    const render::SceneUniforms& uniforms = prepared.uniforms;
     Fnv1a64 hash;
     hash.add("bench_convergence reference 2");
     hash.add(fileBytes(parsed.sourcePath));
-    hash.add(render::assemblePathTracerSource(code, shaders).text());
+    hash.add(prepared.fragmentSource.text());
     hash.addVector(code.shapeParameters);
     hash.addVector(uniforms.objects);
     hash.addVector(uniforms.pigments);

@@ -5,10 +5,12 @@
 # Seeds: every scene in the repository, plus tests/fuzz/corpus and tests/fuzz/findings. The
 # corpus it grows is kept in build-fuzz/corpus; crashes go to build-fuzz/findings/. Copy a
 # finding into tests/fuzz/findings/ once fixed: scene_fuzz_replay (a ctest test) replays it.
-# Needs the Debian packages clang-14 and libclang-rt-14-dev (not installed by
-# install-dependencies.sh: CI only replays). Long runs: prefix with nice -n 15.
+# Needs the Debian packages clang-14 and libclang-rt-14-dev, which it installs when missing
+# (through install-dependencies.sh, which installs them for nothing else: CI only replays).
+# Long runs: prefix with nice -n 15.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+"$root/tools/install-dependencies.sh" clang-14 libclang-rt-14-dev
 seconds="${1:-60}"
 shift || true
 build="$root/build-fuzz"

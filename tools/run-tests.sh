@@ -3,9 +3,9 @@
 # and runs every test through ctest.
 #   tools/run-tests.sh [extra ctest arguments]
 # Then the GL-free tests (label unit: the scene parser and model, the output files, the shader
-# generator, merging and the files' metadata, the fuzz corpus replay) again in an
-# AddressSanitizer + UndefinedBehaviorSanitizer build in build-sanitize/ (the "sanitize"
-# preset); RAYTRACER_SKIP_SANITIZER=1 skips it.
+# generator, merging and the files' metadata, the window's parts without a window, the fuzz
+# corpus replay) again in an AddressSanitizer + UndefinedBehaviorSanitizer build in
+# build-sanitize/ (the "sanitize" preset); RAYTRACER_SKIP_SANITIZER=1 skips it.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/tools/install-dependencies.sh"
@@ -25,6 +25,6 @@ if [ "${RAYTRACER_SKIP_SANITIZER:-0}" != 1 ]; then
     cd "$root"
     cmake --preset sanitize >/dev/null
     cmake --build build-sanitize --parallel --target scene_tests io_tests generator_tests \
-        scale_out_tests scene_fuzz_replay
+        scale_out_tests interaction_tests scene_fuzz_replay
     ctest --preset sanitize
 fi

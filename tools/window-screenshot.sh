@@ -16,6 +16,9 @@ while [ ! -s "$display_file" ]; do sleep 0.1; done
 export DISPLAY=":$(head -n 1 "$display_file")"
 "$root/build/raytracer" "$scene" 640 480 &
 program=$!
+# The panel starts hidden: Tab shows it once the window is there.
+until xdotool search --name '^raytracer' >/dev/null 2>&1; do sleep 0.2; done
+xdotool search --name '^raytracer' key Tab
 sleep "$seconds"
 "$root/build/tests/window_capture" raytracer "$output"
 xdotool search --name '^raytracer' key Escape

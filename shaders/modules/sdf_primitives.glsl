@@ -55,3 +55,11 @@ float sdDisk(vec3 p, vec3 unitNormal, float radius)
     float radial = length(p - height * unitNormal);
     return length(vec2(max(radial - radius, 0.0), height));
 }
+
+// Box of half extents b whose edges and corners are rounded with radius r <= min(b): the
+// points within r of the box of half extents b - r. EXACT, Lipschitz 1: the distance to that
+// inner box (sdBox) less r.
+float sdRoundedBox(vec3 p, vec3 halfExtents, float radius)
+{
+    return sdBox(p, halfExtents - radius) - radius;
+}

@@ -9,6 +9,9 @@
 //   POP_FRAME  a = first transform parameter: back to the parent frame, distance rescaled
 //   COMBINE    a = CSG operator, b = operand count, c = parameter slot (smooth operators)
 //   END        the object's distance is on the stack
+// The opcodes (OPCODE_*), the primitive codes (PRIMITIVE_*) and primitiveDistance, the
+// switch over the primitive kinds, are generated (render/SceneShaderGenerator.cpp) from the
+// kinds' descriptions in scene/Primitives.h.
 
 uniform ivec4 uShapeProgram[SHAPE_PROGRAM_ARRAY_SIZE];
 // Per object, a bounding sphere (centre, radius) for expensive shapes, radius < 0 for none:
@@ -21,21 +24,6 @@ bool mayBeNearer(int object, vec3 p, float known)
     return bound.w < 0.0 || sdSphere(p - bound.xyz, bound.w) < known;
 }
 
-const int OPCODE_END = 0;
-const int OPCODE_PRIMITIVE = 1;
-const int OPCODE_PUSH_FRAME = 2;
-const int OPCODE_POP_FRAME = 3;
-const int OPCODE_COMBINE = 4;
-
-const int PRIMITIVE_SPHERE = 0;
-const int PRIMITIVE_POLYHEDRON = 1;
-const int PRIMITIVE_BOX = 2;
-const int PRIMITIVE_TORUS = 3;
-const int PRIMITIVE_CONE = 4;
-const int PRIMITIVE_CYLINDER = 5;
-const int PRIMITIVE_DISK = 6;
-const int PRIMITIVE_USER = 7;
-
 const int CSG_UNION = 0;
 const int CSG_INTERSECTION = 1;
 const int CSG_DIFFERENCE = 2;
@@ -45,31 +33,6 @@ const int CSG_SMOOTH_DIFFERENCE = 5;
 const int CSG_POLY_SMOOTH_UNION = 6;
 const int CSG_POLY_SMOOTH_INTERSECTION = 7;
 const int CSG_POLY_SMOOTH_DIFFERENCE = 8;
-
-float primitiveDistance(int kind, int first, int extra, vec3 p)
-{
-    vec4 a = uShapeParameters[first];
-    if (kind == PRIMITIVE_SPHERE)
-        return sdSphere(p - a.xyz, a.w);
-    if (kind == PRIMITIVE_POLYHEDRON) {
-        float d = FLOAT_MAX;
-        for (int plane = 0; plane < extra && loopIterationAllowed(); ++plane)
-            d = min(d, sdHalfSpace(p, uShapeParameters[first + plane]));
-        return d;
-    }
-    vec4 b = uShapeParameters[first + 1];
-    if (kind == PRIMITIVE_BOX)
-        return sdBox(p - a.xyz, b.xyz);
-    if (kind == PRIMITIVE_TORUS)
-        return sdTorus(p - a.xyz, a.w, b.x);
-    if (kind == PRIMITIVE_CONE)
-        return sdConeBound(p - a.xyz, b.xy);
-    if (kind == PRIMITIVE_CYLINDER)
-        return sdCappedCylinder(p - a.xyz, a.w, b.x);
-    if (kind == PRIMITIVE_DISK)
-        return sdDisk(p - a.xyz, b.xyz, a.w);
-    return callUserSdf(extra, p, a.xyz) * a.w;
-}
 
 float combine(int op, float a, float b, float parameter)
 {

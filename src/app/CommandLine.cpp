@@ -285,14 +285,15 @@ namespace {
 // The --output paragraph of --help, from the table of formats.
 std::string outputFormatsHelp()
 {
-    std::string text = "  --output FILE         where to write; the extension names the format:\n";
+    std::string text = "  --output FILE         where to write; the extension names the format:";
     for (const io::ImageFormat& format : io::outputFormats()) {
         std::string names;
         for (const std::string& extension : format.extensions)
             names += (names.empty() ? "" : " ") + extension;
         names.resize(std::max<std::size_t>(names.size() + 2, 12), ' ');
-        text += "                        " + names + format.holds + "\n";
+        text += "\n                        " + names + format.holds;
     }
+    // No newline at the end: the text that follows it in usageText starts with one.
     return text;
 }
 
@@ -325,7 +326,8 @@ moments, so that renders can be merged and resumed (docs/SCALE_OUT.md):
 output:
   --spp N               stop after exactly N samples per pixel (deterministic for a seed)
 )"
-           + outputFormatsHelp() + R"(  --stats-output FILE   also write per-pixel statistics (.exr or .pfm): samples, discarded
+           + outputFormatsHelp() + R"(
+  --stats-output FILE   also write per-pixel statistics (.exr or .pfm): samples, discarded
                         samples, variance of the mean. The image and the statistics are
                         written together or not at all; an interrupted render marks them
                         (attribute raytracer:interrupted, where the format holds attributes)

@@ -1,17 +1,20 @@
 #include "app/FileWatcher.h"
 
+#include "io/Sha256.h"
+
+#include <fstream>
 #include <system_error>
 
 namespace app {
 
 namespace fs = std::filesystem;
 
-bool FileWatcher::FileState::operator==(const FileState& other) const
+bool FileWatcher::FileState::sameTimeAndSize(const FileState& other) const
 {
     return exists == other.exists && modified == other.modified && size == other.size;
 }
 
-FileWatcher::FileState FileWatcher::stateOf(const fs::path& file)
+FileWatcher::FileState FileWatcher::timeAndSizeOf(const fs::path& file)
 {
     FileState state;
     std::error_code error;
@@ -27,6 +30,20 @@ FileWatcher::FileState FileWatcher::stateOf(const fs::path& file)
     return state;
 }
 
+std::string FileWatcher::contentDigestOf(const fs::path& file)
+{
+    std::ifstream in(file, std::ios::binary);
+    if (!in)
+        return "";
+    io::Sha256 digest;
+    char buffer[1 << 16];
+    while (in.read(buffer, sizeof buffer) || in.gcount() > 0)
+        digest.add(buffer, static_cast<std::size_t>(in.gcount()));
+    if (in.bad())
+        return "";
+    return digest.hexDigest();
+}
+
 void FileWatcher::watch(const std::vector<fs::path>& files)
 {
     std::vector<FileState> states;
@@ -36,7 +53,14 @@ void FileWatcher::watch(const std::vector<fs::path>& files)
         std::size_t known = 0;
         while (known < paths_.size() && paths_[known] != file)
             ++known;
-        states.push_back(known < paths_.size() ? states_[known] : stateOf(file));
+        if (known < paths_.size()) {
+            states.push_back(states_[known]);
+        } else {
+            FileState state = timeAndSizeOf(file);
+            if (state.exists)
+                state.contentDigest = contentDigestOf(file);
+            states.push_back(std::move(state));
+        }
     }
     paths_ = files;
     states_ = std::move(states);
@@ -46,11 +70,18 @@ std::vector<fs::path> FileWatcher::changedFiles()
 {
     std::vector<fs::path> changed;
     for (std::size_t i = 0; i < paths_.size(); ++i) {
-        const FileState now = stateOf(paths_[i]);
-        if (!(now == states_[i])) {
-            states_[i] = now;
+        FileState now = timeAndSizeOf(paths_[i]);
+        if (now.sameTimeAndSize(states_[i]))
+            continue;
+        // Hashed only when the time or size moved: a few times per save, never per poll.
+        if (now.exists)
+            now.contentDigest = contentDigestOf(paths_[i]);
+        const bool bytesChanged = now.exists != states_[i].exists ||
+                                  now.contentDigest != states_[i].contentDigest ||
+                                  now.contentDigest.empty();
+        states_[i] = std::move(now);
+        if (bytesChanged)
             changed.push_back(paths_[i]);
-        }
     }
     return changed;
 }

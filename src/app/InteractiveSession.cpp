@@ -86,6 +86,9 @@ bool InteractiveSession::reachedEnd(Clock::time_point start) const
 
 bool InteractiveSession::run()
 {
+    if (!line_.quiet)
+        std::cout << "raytracer: Tab shows the statistics panel, with the settings and the keys"
+                  << std::endl;
     const Clock::time_point start = Clock::now();
     restartClock();
     lastViewChange_ = start - std::chrono::seconds(1);
@@ -273,6 +276,12 @@ bool InteractiveSession::reloadChangedFiles()
         fileScene_ = std::move(edited);
         sceneSha256_ = std::move(editedSha256);
         watcher_.watch(filesOfScene(line_.scene, fileScene_));
+        if (decision.changesNothing) {
+            setStatus("the edit changes nothing on screen (a comment, spacing): the "
+                      "accumulation goes on",
+                      false);
+            return false;
+        }
         char text[200];
         if (decision.rebuildShader) {
             std::snprintf(text, sizeof text,

@@ -51,8 +51,8 @@ private:
     bool applyPanelSettings(const PanelSettings& tuned);
     // A window of another size renders at that size; true when it changed.
     bool followWindowSize();
-    // Reloads the scene when one of its files changed; true when the scene on screen was
-    // replaced.
+    // Reloads the scene when the bytes of one of its files changed; true when the scene on
+    // screen was replaced (not when the edit changes nothing the GPU is given).
     bool reloadChangedFiles();
     void save();
     void setStatus(std::string status, bool isError);

@@ -12,11 +12,9 @@
 #include "io/OutputFiles.h"
 #include "platform/ContextFactory.h"
 #include "platform/GlfwWindowContext.h"
-#include "render/PathTracerProgram.h"
 #include "render/ProgressiveRenderer.h"
 #include "render/RenderFile.h"
-#include "scene/FileLookup.h"
-#include "scene/InvisibleObjects.h"
+#include "render/ScenePreparation.h"
 #include "scene/SceneFeatures.h"
 #include "scene/SceneParser.h"
 
@@ -274,19 +272,19 @@ int runRender(const CommandLine& commandLine)
 
 int printFeatures(const CommandLine& line)
 {
-    const scene::Scene scene = scene::parseSceneFile(line.scene);
-    std::cout << scene::analyseFeatures(scene).describe();
+    const render::PreparedScene prepared =
+        render::prepareScene(scene::parseSceneFile(line.scene),
+                             render::shaderBuild(line.settings), render::defaultShaderDirectory());
+    std::cout << prepared.code.features.describe();
     return kExitSuccess;
 }
 
 int printShader(const CommandLine& line)
 {
-    const scene::Scene scene = scene::parseSceneFile(line.scene);
-    const render::SceneShaderCode code = render::generateSceneShaderCode(
-        scene::dropInvisibleObjects(scene), render::shaderBuild(line.settings));
-    std::cout << render::assemblePathTracerSource(code,
-                                                  scene::FileLookup::dataDirectory() / "shaders")
-                     .text();
+    const render::PreparedScene prepared =
+        render::prepareScene(scene::parseSceneFile(line.scene),
+                             render::shaderBuild(line.settings), render::defaultShaderDirectory());
+    std::cout << prepared.fragmentSource.text();
     return kExitSuccess;
 }
 

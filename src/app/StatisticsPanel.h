@@ -38,8 +38,10 @@ struct PanelSettings {
 };
 
 // The on-screen statistics and settings, drawn with Dear ImGui over the picture (Tab shows
-// or hides it). It owns the ImGui context and the backends for the window, which must have
-// its input callbacks installed before the panel is made (ImGui chains to them).
+// or hides it). It starts hidden: shown, it covers most of a small window and takes the
+// mouse drags that start over it, so a fresh window would not answer the mouse. It owns the
+// ImGui context and the backends for the window, which must have its input callbacks
+// installed before the panel is made (ImGui chains to them).
 class StatisticsPanel {
 public:
     explicit StatisticsPanel(GLFWwindow* window);
@@ -63,7 +65,7 @@ public:
 
 private:
     ImGuiContext* context_ = nullptr;
-    bool visible_ = true;
+    bool visible_ = false;
 };
 
 }  // namespace app

@@ -76,14 +76,8 @@ std::string fullscreenVertexSource(const fs::path& shaderDirectory)
     return kVersion + readTextFile(shaderDirectory / "modules" / "fullscreen.vert");
 }
 
-PathTracerProgram::PathTracerProgram(const SceneShaderCode& code, const fs::path& shaderDirectory)
-    : PathTracerProgram(assemblePathTracerSource(code, shaderDirectory),
-                        fullscreenVertexSource(shaderDirectory))
-{
-}
-
-PathTracerProgram::PathTracerProgram(const ShaderSource& fragment, const std::string& vertex)
-    : fragmentSource_(fragment.text()), program_(compileAndTime(vertex, fragment, compileSeconds_))
+PathTracerProgram::PathTracerProgram(const ShaderSource& fragment, const fs::path& shaderDirectory)
+    : program_(compileAndTime(fullscreenVertexSource(shaderDirectory), fragment, compileSeconds_))
 {
 }
 

@@ -20,18 +20,15 @@ std::string fullscreenVertexSource(const std::filesystem::path& shaderDirectory)
 // The compiled path-tracing program with the source it came from.
 class PathTracerProgram {
 public:
-    PathTracerProgram(const SceneShaderCode& code, const std::filesystem::path& shaderDirectory);
+    // `fragment` as render/ScenePreparation assembles it.
+    PathTracerProgram(const ShaderSource& fragment, const std::filesystem::path& shaderDirectory);
 
     const gl::Program& program() const { return program_; }
-    const std::string& fragmentSource() const { return fragmentSource_; }
     double compileSeconds() const { return compileSeconds_; }
 
 private:
-    PathTracerProgram(const ShaderSource& fragment, const std::string& vertex);
-
     // Declared first: the program's initialiser measures into it.
     double compileSeconds_ = 0.0;
-    std::string fragmentSource_;
     gl::Program program_;
 };
 

@@ -1,8 +1,6 @@
 #include "render/ProgressiveRenderer.h"
 
 #include "gl/GlError.h"
-#include "scene/FileLookup.h"
-#include "scene/InvisibleObjects.h"
 
 #include <algorithm>
 #include <chrono>
@@ -13,11 +11,6 @@
 namespace render {
 
 namespace {
-
-std::filesystem::path shaderDirectory()
-{
-    return scene::FileLookup::dataDirectory() / "shaders";
-}
 
 double secondsSince(std::chrono::steady_clock::time_point start)
 {
@@ -48,15 +41,23 @@ void checkRenderSize(int width, int height)
 
 ProgressiveRenderer::ProgressiveRenderer(const scene::Scene& scene, int width, int height,
                                          const RenderSettings& settings)
+    : ProgressiveRenderer(prepareScene(scene, shaderBuild(settings), defaultShaderDirectory()),
+                          width, height, settings)
+{
+}
+
+ProgressiveRenderer::ProgressiveRenderer(PreparedScene prepared, int width, int height,
+                                         const RenderSettings& settings)
     : settings_(settings),
-      scene_(scene::dropInvisibleObjects(scene)),
-      code_(generateSceneShaderCode(scene_, shaderBuild(settings))),
-      uniforms_(packSceneUniforms(scene_, code_)),
+      scene_(std::move(prepared.visible)),
+      code_(std::move(prepared.code)),
+      uniforms_(std::move(prepared.uniforms)),
       program_((checkRenderSize(width, height),
-                std::make_unique<PathTracerProgram>(code_, shaderDirectory()))),
+                std::make_unique<PathTracerProgram>(prepared.fragmentSource,
+                                                    defaultShaderDirectory()))),
       pigmentTextures_(loadPigmentTextures(uniforms_.textureLayers)),
       targets_(width, height),
-      toneMapper_(shaderDirectory())
+      toneMapper_(defaultShaderDirectory())
 {
     // The first band is small: its cost is not known yet (and it pays for the driver's code
     // generation), so a large image's first frame in one band could not be stopped for
@@ -105,23 +106,25 @@ void ProgressiveRenderer::uploadAll()
 ReloadDecision ProgressiveRenderer::setScene(const scene::Scene& original,
                                              const std::vector<std::filesystem::path>& changedFiles)
 {
-    scene::Scene scene = scene::dropInvisibleObjects(original);
-    SceneShaderCode code = generateSceneShaderCode(scene, shaderBuild(settings_));
-    SceneUniforms uniforms = packSceneUniforms(scene, code);
+    PreparedScene prepared =
+        prepareScene(original, shaderBuild(settings_), defaultShaderDirectory());
     const ReloadDecision decision =
-        decideReload(code_, code, uniforms_.textureLayers, uniforms.textureLayers, changedFiles);
+        decideReload(code_, uniforms_, prepared.code, prepared.uniforms, changedFiles);
+    if (decision.changesNothing)
+        return decision;
     // Everything that can fail comes first: until the new program and textures exist, the
     // renderer keeps the old ones.
     std::unique_ptr<PathTracerProgram> program =
-        decision.rebuildShader ? std::make_unique<PathTracerProgram>(code, shaderDirectory())
-                               : nullptr;
+        decision.rebuildShader
+            ? std::make_unique<PathTracerProgram>(prepared.fragmentSource, defaultShaderDirectory())
+            : nullptr;
     std::optional<PigmentTextures> textures;
     if (decision.reloadTextures)
-        textures = loadPigmentTextures(uniforms.textureLayers);
+        textures = loadPigmentTextures(prepared.uniforms.textureLayers);
 
-    scene_ = std::move(scene);
-    code_ = std::move(code);
-    uniforms_ = std::move(uniforms);
+    scene_ = std::move(prepared.visible);
+    code_ = std::move(prepared.code);
+    uniforms_ = std::move(prepared.uniforms);
     if (program)
         program_ = std::move(program);
     if (textures)

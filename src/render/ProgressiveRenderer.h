@@ -6,6 +6,7 @@
 #include "render/PathTracerProgram.h"
 #include "render/ReloadDecision.h"
 #include "render/RenderSettings.h"
+#include "render/ScenePreparation.h"
 #include "render/SceneUniforms.h"
 #include "render/TextureArrayLoader.h"
 #include "render/ToneMapper.h"
@@ -48,11 +49,12 @@ public:
 
     // Replaces the scene: if its shader code is unchanged (only values differ) the uniforms
     // are re-uploaded; otherwise the shader is rebuilt (render/ReloadDecision.h decides).
-    // `changedFiles`: files changed on disk since the scene shown was loaded; a user SDF file
-    // among them rebuilds the shader, a texture reloads the textures. Either way
-    // accumulation restarts. Returns what was redone. When the new shader does not compile
-    // or a texture cannot be read it throws, and the renderer is as it was: same shader,
-    // same scene, same image.
+    // `changedFiles`: files whose bytes changed on disk since the scene shown was loaded; a
+    // user SDF file among them rebuilds the shader, a texture reloads the textures. Either
+    // way accumulation restarts, unless nothing the GPU is given differs (changesNothing: a
+    // comment edited, say), when the renderer goes on as it was. Returns what was redone.
+    // When the new shader does not compile or a texture cannot be read it throws, and the
+    // renderer is as it was: same shader, same scene, same image.
     ReloadDecision setScene(const scene::Scene& scene,
                             const std::vector<std::filesystem::path>& changedFiles = {});
 
@@ -105,7 +107,6 @@ public:
     void setExposure(float exposure) { exposure_ = exposure; }
     float exposure() const { return exposure_; }
 
-    const std::string& fragmentSource() const { return program_->fragmentSource(); }
     const scene::SceneFeatures& features() const { return code_.features; }
     double compileSeconds() const { return program_->compileSeconds(); }
     // Duration of the first frame, which includes the driver's code generation.
@@ -114,6 +115,8 @@ public:
     double lastSecondsPerSample() const { return lastSecondsPerSample_; }
 
 private:
+    ProgressiveRenderer(PreparedScene prepared, int width, int height,
+                        const RenderSettings& settings);
     void uploadAll();
     void generateDriverCode();
     void restartAccumulation();

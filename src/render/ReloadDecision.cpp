@@ -24,20 +24,35 @@ bool anyChanged(const std::vector<fs::path>& files, const std::vector<fs::path>&
     });
 }
 
+// Beyond what decides a rebuild: the rest of the code, and the arrays of numbers the code
+// carries for upload (the general variant's shape programs, every shape's parameters).
+bool sameCodeAndArrays(const SceneShaderCode& a, const SceneShaderCode& b)
+{
+    return a.exactGeometry == b.exactGeometry && a.exactFunctions == b.exactFunctions &&
+           a.profileCounters == b.profileCounters && a.marchesAnything == b.marchesAnything &&
+           a.shapeParameters == b.shapeParameters && a.shapeProgram == b.shapeProgram &&
+           a.objectProgramStart == b.objectProgramStart &&
+           a.objectBounds == b.objectBounds && a.objectCullingBits == b.objectCullingBits;
+}
+
 }  // namespace
 
-ReloadDecision decideReload(const SceneShaderCode& shown, const SceneShaderCode& edited,
-                            const std::vector<fs::path>& shownTextures,
-                            const std::vector<fs::path>& editedTextures,
+ReloadDecision decideReload(const SceneShaderCode& shownCode, const SceneUniforms& shownUniforms,
+                            const SceneShaderCode& editedCode,
+                            const SceneUniforms& editedUniforms,
                             const std::vector<fs::path>& changedFiles)
 {
     ReloadDecision decision;
-    decision.rebuildShader = shown.variant != edited.variant || shown.defines != edited.defines ||
-                             shown.sceneFunctions != edited.sceneFunctions ||
-                             shown.userSdfFiles != edited.userSdfFiles ||
-                             anyChanged(edited.userSdfFiles, changedFiles);
-    decision.reloadTextures =
-        shownTextures != editedTextures || anyChanged(editedTextures, changedFiles);
+    decision.rebuildShader = shownCode.variant != editedCode.variant ||
+                             shownCode.defines != editedCode.defines ||
+                             shownCode.sceneFunctions != editedCode.sceneFunctions ||
+                             shownCode.userSdfFiles != editedCode.userSdfFiles ||
+                             anyChanged(editedCode.userSdfFiles, changedFiles);
+    decision.reloadTextures = shownUniforms.textureLayers != editedUniforms.textureLayers ||
+                              anyChanged(editedUniforms.textureLayers, changedFiles);
+    decision.changesNothing = !decision.rebuildShader && !decision.reloadTextures &&
+                              sameCodeAndArrays(shownCode, editedCode) &&
+                              shownUniforms == editedUniforms;
     return decision;
 }
 

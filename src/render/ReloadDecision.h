@@ -1,5 +1,6 @@
 #pragma once
 #include "render/SceneShaderGenerator.h"
+#include "render/SceneUniforms.h"
 #include "scene/Scene.h"
 
 #include <filesystem>
@@ -17,14 +18,18 @@ struct ReloadDecision {
     bool rebuildShader = false;
     // The scene's texture files differ (another file, another order), or one changed on disk.
     bool reloadTextures = false;
+    // Nothing the GPU is given differs: the same code, the same number in every uniform, no
+    // file it reads changed. An edit of a comment or of spacing, or a number written another
+    // way, changes nothing on screen, so the accumulation goes on.
+    bool changesNothing = false;
 };
 
-// `shownTextures` / `editedTextures`: the texture files in layer order
-// (SceneUniforms::textureLayers). `changedFiles`: the files that changed on disk since the
-// shown scene was loaded.
-ReloadDecision decideReload(const SceneShaderCode& shown, const SceneShaderCode& edited,
-                            const std::vector<std::filesystem::path>& shownTextures,
-                            const std::vector<std::filesystem::path>& editedTextures,
+// `shown` / `edited`: the code generated for each scene and its numbers laid out as uniforms
+// (whose textureLayers are its texture files in layer order). `changedFiles`: the files whose
+// bytes changed on disk since the shown scene was loaded (app::FileWatcher).
+ReloadDecision decideReload(const SceneShaderCode& shownCode, const SceneUniforms& shownUniforms,
+                            const SceneShaderCode& editedCode,
+                            const SceneUniforms& editedUniforms,
                             const std::vector<std::filesystem::path>& changedFiles);
 
 // The file's camera lines changed between two loads of a scene file. Only then does a reload

@@ -1,6 +1,7 @@
 #include "render/SceneShaderGenerator.h"
 
 #include "render/ExactSceneIntersection.h"
+#include "scene/PrimitiveKinds.h"
 #include "scene/SceneBounds.h"
 
 #include <algorithm>
@@ -15,18 +16,11 @@ using namespace scene;
 
 namespace {
 
-// Codes shared with shaders/modules/shape_interpreter.glsl.
+// The interpreter's instructions (shaders/modules/shape_interpreter.glsl), which it receives
+// as generated #defines.
 enum Opcode { kEnd = 0, kPrimitive = 1, kPushFrame = 2, kPopFrame = 3, kCombine = 4 };
-enum PrimitiveCode {
-    kSphere = 0,
-    kPolyhedron = 1,
-    kBox = 2,
-    kTorus = 3,
-    kCone = 4,
-    kCylinder = 5,
-    kDisk = 6,
-    kUser = 7,
-};
+const char* const kOpcodeNames[] = {"OPCODE_END", "OPCODE_PRIMITIVE", "OPCODE_PUSH_FRAME",
+                                    "OPCODE_POP_FRAME", "OPCODE_COMBINE"};
 
 int csgCode(CsgOperator op)
 {
@@ -124,8 +118,12 @@ public:
 private:
     int allocate(std::initializer_list<glm::vec4> values)
     {
+        return allocate(std::vector<glm::vec4>(values));
+    }
+    int allocate(const std::vector<glm::vec4>& values)
+    {
         const int first = static_cast<int>(code_.shapeParameters.size());
-        code_.shapeParameters.insert(code_.shapeParameters.end(), values);
+        code_.shapeParameters.insert(code_.shapeParameters.end(), values.begin(), values.end());
         return first;
     }
 
@@ -157,58 +155,24 @@ private:
     // Lays out a primitive's parameters (the same layout for both variants).
     Primitive layoutPrimitive(const Geometry& geometry)
     {
-        if (const auto* sphere = std::get_if<Sphere>(&geometry)) {
-            const int s = allocate({glm::vec4(sphere->center, sphere->radius)});
-            return {kSphere, s, 0, "sdSphere(p - " + slot(s) + ".xyz, " + slot(s) + ".w)"};
-        }
-        if (const auto* polyhedron = std::get_if<Polyhedron>(&geometry)) {
-            const int first = static_cast<int>(code_.shapeParameters.size());
+        if (const PrimitiveKind* kind = primitiveKindOf(geometry)) {
+            const std::vector<glm::vec4> values = primitiveParameters(geometry);
+            const int first = allocate(values);
+            if (!kind->unionOfTerms)
+                return {kind->code, first, 0,
+                        distanceOverSlots(*kind, [&](int k) { return slot(first + k); })};
             std::string expression;
-            for (std::size_t i = 0; i < polyhedron->planes.size(); ++i) {
-                const glm::vec4& plane = polyhedron->planes[i];
-                const float length = glm::length(glm::vec3(plane));
-                const int s = allocate({plane / length});
-                const std::string term = "sdHalfSpace(p, " + slot(s) + ")";
+            for (int i = 0; i < static_cast<int>(values.size()); ++i) {
+                const std::string term =
+                    distanceOverSlots(*kind, [&](int) { return slot(first + i); });
                 expression = i == 0 ? term : "min(" + expression + ", " + term + ")";
             }
-            return {kPolyhedron, first, static_cast<int>(polyhedron->planes.size()), expression};
-        }
-        if (const auto* box = std::get_if<Box>(&geometry)) {
-            const int s = allocate({glm::vec4(box->center, 0.0f), glm::vec4(box->halfExtents, 0.0f)});
-            return {kBox, s, 0,
-                    "sdBox(p - " + slot(s) + ".xyz, " + slot(s + 1) + ".xyz)"};
-        }
-        if (const auto* torus = std::get_if<Torus>(&geometry)) {
-            const int s = allocate({glm::vec4(torus->center, torus->majorRadius),
-                                    glm::vec4(torus->minorRadius, 0.0f, 0.0f, 0.0f)});
-            return {kTorus, s, 0,
-                    "sdTorus(p - " + slot(s) + ".xyz, " + slot(s) + ".w, " + slot(s + 1) + ".x)"};
-        }
-        if (const auto* cone = std::get_if<Cone>(&geometry)) {
-            const glm::vec2 unit = glm::normalize(cone->slope);
-            const int s = allocate({glm::vec4(cone->apex, 0.0f),
-                                    glm::vec4(unit.x, unit.y, 0.0f, 0.0f)});
-            return {kCone, s, 0,
-                    "sdConeBound(p - " + slot(s) + ".xyz, " + slot(s + 1) + ".xy)"};
-        }
-        if (const auto* cylinder = std::get_if<Cylinder>(&geometry)) {
-            const int s = allocate({glm::vec4(cylinder->center, cylinder->radius),
-                                    glm::vec4(cylinder->halfHeight, 0.0f, 0.0f, 0.0f)});
-            return {kCylinder, s, 0,
-                    "sdCappedCylinder(p - " + slot(s) + ".xyz, " + slot(s) + ".w, " +
-                        slot(s + 1) + ".x)"};
-        }
-        if (const auto* disk = std::get_if<Disk>(&geometry)) {
-            const int s = allocate({glm::vec4(disk->center, disk->radius),
-                                    glm::vec4(glm::normalize(disk->normal), 0.0f)});
-            return {kDisk, s, 0,
-                    "sdDisk(p - " + slot(s) + ".xyz, " + slot(s + 1) + ".xyz, " + slot(s) +
-                        ".w)"};
+            return {kind->code, first, static_cast<int>(values.size()), expression};
         }
         const auto& user = std::get<UserSdf>(geometry);
         // A function that may overestimate by a factor L is stepped by distance / L.
         const int s = allocate({glm::vec4(user.position, 1.0f / user.lipschitz)});
-        return {kUser, s, userSdfId(user.name),
+        return {userSdfCode(), s, userSdfId(user.name),
                 user.name + "(p, " + slot(s) + ".xyz) * " + slot(s) + ".w"};
     }
 
@@ -510,6 +474,46 @@ std::string specializedSceneFunctions(const Scene& scene, ShapeCompiler& compile
     return out.str();
 }
 
+// The general shader's distance to one primitive: a branch per kind, the kinds that read
+// fewer parameter vec4s first so that each vec4 is fetched once and only where needed.
+std::string primitiveInterpreter()
+{
+    const char* const names = "abcdefgh";
+    std::vector<const PrimitiveKind*> kinds;
+    for (const PrimitiveKind& kind : primitiveKinds())
+        kinds.push_back(&kind);
+    std::stable_sort(kinds.begin(), kinds.end(), [](const PrimitiveKind* a, const PrimitiveKind* b) {
+        return a->parameterCount < b->parameterCount;
+    });
+    std::ostringstream out;
+    out << "// Primitive `kind` with its parameters from uShapeParameters[first]; `extra` counts a\n"
+           "// union's terms (a polyhedron's planes) or names the user SDF (scene/Primitives.h).\n"
+           "float primitiveDistance(int kind, int first, int extra, vec3 p)\n{\n";
+    int fetched = 0;
+    auto fetch = [&](int count) {
+        for (; fetched < count; ++fetched)
+            out << "    vec4 " << names[fetched] << " = uShapeParameters[first"
+                << (fetched == 0 ? "" : " + " + std::to_string(fetched)) << "];\n";
+    };
+    fetch(1);  // the user SDF's
+    for (const PrimitiveKind* kind : kinds) {
+        const std::string code = primitiveCodeName(*kind);
+        if (kind->unionOfTerms) {
+            out << "    if (kind == " << code << ") {\n        float d = FLOAT_MAX;\n"
+                << "        for (int term = 0; term < extra && loopIterationAllowed(); ++term)\n"
+                << "            d = min(d, "
+                << distanceOverSlots(*kind, [](int) { return "uShapeParameters[first + term]"; })
+                << ");\n        return d;\n    }\n";
+            continue;
+        }
+        fetch(kind->parameterCount);
+        out << "    if (kind == " << code << ")\n        return "
+            << distanceOverSlots(*kind, [&](int k) { return std::string(1, names[k]); }) << ";\n";
+    }
+    out << "    return callUserSdf(extra, p, a.xyz) * a.w;\n}\n";
+    return out.str();
+}
+
 std::string userSdfDispatcher(const std::map<std::string, int>& ids)
 {
     std::ostringstream out;
@@ -565,7 +569,7 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
                                             : glm::vec4(0.0f, 0.0f, 0.0f, -1.0f));
         }
         // Declared before the interpreter module, which calls it.
-        code.sceneFunctions = userSdfDispatcher(compiler.userSdfIds());
+        code.sceneFunctions = userSdfDispatcher(compiler.userSdfIds()) + "\n" + primitiveInterpreter();
         // The interpreter's culled forms leave out object k < 32 where mask bit k is clear.
         for (std::size_t i = 0; i < scene.objects.size(); ++i)
             code.objectCullingBits.push_back(i < 32 ? 1u << i : 0u);
@@ -578,7 +582,6 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
     const int lightCount =
         static_cast<int>(scene.pointLights.size() + sphereLights(scene).size());
     std::ostringstream out;
-    define(out, "SHADER_SPECIALIZED_SHAPES", specialized ? 1 : 0);
     define(out, "OBJECT_COUNT", static_cast<int>(scene.objects.size()));
     define(out, "OBJECT_ARRAY_SIZE", std::max<int>(1, scene.objects.size()));
     define(out, "SHAPE_PARAMETER_ARRAY_SIZE", std::max<int>(1, code.shapeParameters.size()));
@@ -588,9 +591,6 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
     define(out, "FINISH_ARRAY_SIZE", std::max<int>(1, scene.finishes.size()));
     define(out, "LIGHT_COUNT", lightCount);
     define(out, "LIGHT_ARRAY_SIZE", std::max(1, lightCount));
-    define(out, "HAS_TRANSFORMS", f.transforms ? 1 : 0);
-    define(out, "HAS_USER_SDFS", f.userSdfs.empty() ? 0 : 1);
-    define(out, "HAS_LAMBERTIAN", f.has(MaterialKind::Lambertian) ? 1 : 0);
     define(out, "HAS_BLINN_PHONG", f.has(MaterialKind::BlinnPhong) ? 1 : 0);
     define(out, "HAS_MIRROR", f.has(MaterialKind::Mirror) ? 1 : 0);
     define(out, "HAS_DIELECTRIC", f.has(MaterialKind::Dielectric) ? 1 : 0);
@@ -609,6 +609,14 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
     // sphere tracer's loops are left out, which llvmpipe would otherwise run once per ray
     // with no pixel in them.
     define(out, "HAS_MARCHED_OBJECTS", code.marchesAnything ? 1 : 0);
+    if (!specialized) {
+        // The interpreter's codes, from the tables that define them.
+        for (int opcode = kEnd; opcode <= kCombine; ++opcode)
+            define(out, kOpcodeNames[opcode], opcode);
+        for (const PrimitiveKind& kind : primitiveKinds())
+            define(out, primitiveCodeName(kind), kind.code);
+        define(out, "PRIMITIVE_USER", userSdfCode());
+    }
     code.defines = out.str();
     return code;
 }

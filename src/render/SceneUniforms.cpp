@@ -93,6 +93,20 @@ std::vector<double> lightPowers(const Scene& scene)
     return powers;
 }
 
+bool SceneUniforms::operator==(const SceneUniforms& other) const
+{
+    return objects == other.objects && pigments == other.pigments &&
+           finishes == other.finishes && lights == other.lights &&
+           sphereLightPieces == other.sphereLightPieces &&
+           textureLayers == other.textureLayers &&
+           cameraFrame.right == other.cameraFrame.right &&
+           cameraFrame.trueUp == other.cameraFrame.trueUp &&
+           cameraFrame.forward == other.cameraFrame.forward && cameraEye == other.cameraEye &&
+           tanHalfFovy == other.tanHalfFovy && bounds.center == other.bounds.center &&
+           bounds.radius == other.bounds.radius && environment.kind == other.environment.kind &&
+           environment.color == other.environment.color;
+}
+
 SceneUniforms packSceneUniforms(const Scene& scene, const SceneShaderCode& code)
 {
     SceneUniforms packed;

@@ -33,6 +33,10 @@ struct SceneUniforms {
     float tanHalfFovy = 1.0f;
     scene::SceneBounds bounds;
     scene::Environment environment;
+
+    // Every number equal: uploading the one in place of the other changes nothing.
+    bool operator==(const SceneUniforms& other) const;
+    bool operator!=(const SceneUniforms& other) const { return !(*this == other); }
 };
 
 SceneUniforms packSceneUniforms(const scene::Scene& scene, const SceneShaderCode& code);

@@ -22,7 +22,6 @@ public:
     void addFile(const std::filesystem::path& file, const std::filesystem::path& root);
 
     std::string text() const;
-    const std::vector<std::string>& pieceNames() const { return names_; }
 
     // Rewrites a compiler log's "0:12(5): error: ..." (Mesa), "0(12) : error ..." (NVIDIA)
     // or "ERROR: 0:12: ..." (AMD, Intel) locations as "name:12: error: ...", followed by the

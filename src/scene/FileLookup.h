@@ -25,8 +25,6 @@ public:
     std::vector<std::filesystem::path> textureFolders() const;
     std::vector<std::filesystem::path> shaderFolders() const;
 
-    const std::filesystem::path& data() const { return dataDirectory_; }
-
 private:
     std::filesystem::path sceneDirectory_;
     std::filesystem::path dataDirectory_;

@@ -1,6 +1,8 @@
 #pragma once
 // The scene model: what a scene file means, in plain values. It knows nothing of OpenGL or
 // of how the renderer lays the scene out for the GPU (see render/SceneUniforms).
+#include "scene/Primitives.h"
+
 #include <glm/glm.hpp>
 
 #include <filesystem>
@@ -58,46 +60,7 @@ struct Finish {
     bool isEmissive() const;
 };
 
-// --- geometry ---------------------------------------------------------------------------
-
-struct Sphere {
-    glm::vec3 center{0.0f};
-    float radius = 1.0f;
-};
-
-// Union of the solid half-spaces dot(normal, x) + offset <= 0, as written (not normalised).
-struct Polyhedron {
-    std::vector<glm::vec4> planes;
-};
-
-struct Box {
-    glm::vec3 center{0.0f};
-    glm::vec3 halfExtents{1.0f};
-};
-
-struct Torus {
-    glm::vec3 center{0.0f};
-    float majorRadius = 1.0f;
-    float minorRadius = 0.25f;
-};
-
-// Infinite cone, apex at `apex`, axis y, opening towards -y; `slope` is the format's (a, b).
-struct Cone {
-    glm::vec3 apex{0.0f};
-    glm::vec2 slope{1.0f, 1.0f};
-};
-
-struct Cylinder {
-    glm::vec3 center{0.0f};
-    float radius = 1.0f;
-    float halfHeight = 1.0f;
-};
-
-struct Disk {
-    glm::vec3 center{0.0f};
-    glm::vec3 normal{0.0f, 1.0f, 0.0f};  // as written, not normalised
-    float radius = 1.0f;
-};
+// --- geometry: the primitives (scene/Primitives.h), user SDFs and CSG ----------------------
 
 // `float NAME(vec3 p, vec3 x)` from a GLSL file. The file may declare, in comment lines,
 //   // @bound R        every point of the surface lies within R of the position x
@@ -146,8 +109,15 @@ glm::vec3 applyTransform(const Transform& transform, const glm::vec3& local);
 // w' = s w - dot(n', T).
 glm::vec4 applyTransformToPlane(const Transform& transform, const glm::vec4& localPlane);
 
-using Geometry =
-    std::variant<Sphere, Polyhedron, Box, Torus, Cone, Cylinder, Disk, UserSdf, CsgNode>;
+template <typename List, typename... More>
+struct VariantOf;
+template <typename... Listed, typename... More>
+struct VariantOf<TypeList<Listed...>, More...> {
+    using type = std::variant<Listed..., More...>;
+};
+
+// The primitives first: a primitive's code is its index here (scene/PrimitiveKinds.h).
+using Geometry = VariantOf<PrimitiveTypes, UserSdf, CsgNode>::type;
 
 struct Shape {
     Geometry geometry;

@@ -1,5 +1,7 @@
 #include "scene/SceneBounds.h"
 
+#include "scene/PrimitiveKinds.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -24,11 +26,6 @@ struct Box3 {
     }
     bool empty() const { return low.x > high.x; }
 };
-
-ShapeBound finiteBound(const glm::vec3& center, float radius)
-{
-    return {true, center, radius};
-}
 
 ShapeBound enclose(const std::vector<ShapeBound>& bounds, float margin)
 {
@@ -63,29 +60,10 @@ float smoothMargin(const CsgNode& node)
 struct LocalBound {
     const Shape& shape;
 
-    ShapeBound operator()(const Sphere& sphere) const
+    template <typename P, std::enable_if_t<kIsPrimitive<P>, int> = 0>
+    ShapeBound operator()(const P& primitive) const
     {
-        return finiteBound(sphere.center, sphere.radius);
-    }
-    ShapeBound operator()(const Polyhedron&) const { return {}; }
-    ShapeBound operator()(const Box& box) const
-    {
-        return finiteBound(box.center, glm::length(box.halfExtents));
-    }
-    ShapeBound operator()(const Torus& torus) const
-    {
-        return finiteBound(torus.center, torus.majorRadius + torus.minorRadius);
-    }
-    ShapeBound operator()(const Cone&) const { return {}; }
-    ShapeBound operator()(const Cylinder& cylinder) const
-    {
-        return finiteBound(cylinder.center,
-                           std::sqrt(cylinder.radius * cylinder.radius +
-                                     cylinder.halfHeight * cylinder.halfHeight));
-    }
-    ShapeBound operator()(const Disk& disk) const
-    {
-        return finiteBound(disk.center, disk.radius);
+        return Primitive<P>::bound(primitive);
     }
     ShapeBound operator()(const UserSdf& user) const
     {

@@ -19,12 +19,8 @@ struct SceneBounds {
 
 SceneBounds computeSceneBounds(const Scene& scene);
 
-// Bounding sphere of one shape in world space; infinite shapes (planes, cones) have none.
-struct ShapeBound {
-    bool finite = false;
-    glm::vec3 center{0.0f};
-    float radius = 0.0f;
-};
+// Bounding sphere of one shape in world space (ShapeBound: scene/Primitives.h); infinite
+// shapes (planes, cones) have none.
 ShapeBound boundShape(const Shape& shape);
 
 }  // namespace scene

@@ -11,6 +11,17 @@ namespace {
 // sequence or a megabyte-long word still gives one short, readable line.
 constexpr std::size_t kShownTokenLength = 40;
 
+std::string describe(const std::string& file, int line, const std::string& token,
+                     const std::string& expected)
+{
+    const std::string where = file + ":" + std::to_string(line) + ": ";
+    const std::string read =
+        token.empty() ? "reached the end of the file" : "read '" + shownToken(token) + "'";
+    return where + read + ", expected " + expected;
+}
+
+}  // namespace
+
 std::string shownToken(const std::string& token)
 {
     const bool cut = token.size() > kShownTokenLength;
@@ -27,17 +38,6 @@ std::string shownToken(const std::string& token)
     }
     return cut ? shown + "..." : shown;
 }
-
-std::string describe(const std::string& file, int line, const std::string& token,
-                     const std::string& expected)
-{
-    const std::string where = file + ":" + std::to_string(line) + ": ";
-    const std::string read =
-        token.empty() ? "reached the end of the file" : "read '" + shownToken(token) + "'";
-    return where + read + ", expected " + expected;
-}
-
-}  // namespace
 
 SceneError::SceneError(const std::string& file, int line, const std::string& token,
                        const std::string& expected)

@@ -25,4 +25,9 @@ private:
     std::string expected_;
 };
 
+// A token as messages show it: at most 40 bytes of it, then "...", and every byte outside
+// printable ASCII as \xNN. For a word the user wrote that a message quotes elsewhere than as
+// the token read (the shader file a user SDF name asks for, say).
+std::string shownToken(const std::string& token);
+
 }  // namespace scene

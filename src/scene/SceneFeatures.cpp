@@ -1,5 +1,7 @@
 #include "scene/SceneFeatures.h"
 
+#include "scene/PrimitiveKinds.h"
+
 #include <sstream>
 
 namespace scene {
@@ -9,13 +11,10 @@ namespace {
 struct ShapeFeatures {
     SceneFeatures& features;
 
-    void operator()(const Sphere&) { features.primitives.insert(PrimitiveKind::Sphere); }
-    void operator()(const Polyhedron&) { features.primitives.insert(PrimitiveKind::Polyhedron); }
-    void operator()(const Box&) { features.primitives.insert(PrimitiveKind::Box); }
-    void operator()(const Torus&) { features.primitives.insert(PrimitiveKind::Torus); }
-    void operator()(const Cone&) { features.primitives.insert(PrimitiveKind::Cone); }
-    void operator()(const Cylinder&) { features.primitives.insert(PrimitiveKind::Cylinder); }
-    void operator()(const Disk&) { features.primitives.insert(PrimitiveKind::Disk); }
+    template <typename P, std::enable_if_t<kIsPrimitive<P>, int> = 0>
+    void operator()(const P&)
+    {
+    }
     void operator()(const UserSdf& user) { features.userSdfs[user.name] = user.sourcePath; }
     void operator()(const CsgNode& node)
     {
@@ -64,9 +63,6 @@ SceneFeatures analyseFeatures(const Scene& scene)
 SceneFeatures SceneFeatures::everything(const Scene& scene)
 {
     SceneFeatures features;
-    features.primitives = {PrimitiveKind::Sphere, PrimitiveKind::Polyhedron, PrimitiveKind::Box,
-                           PrimitiveKind::Torus,  PrimitiveKind::Cone,       PrimitiveKind::Cylinder,
-                           PrimitiveKind::Disk};
     features.userSdfs = analyseFeatures(scene).userSdfs;
     features.csgOperators = {CsgOperator::Union,
                              CsgOperator::Intersection,
@@ -91,7 +87,6 @@ SceneFeatures SceneFeatures::everything(const Scene& scene)
 std::string SceneFeatures::describe() const
 {
     std::ostringstream text;
-    text << "primitives:    " << join(primitives) << "\n";
     text << "user SDFs:     ";
     if (userSdfs.empty())
         text << "none";
@@ -113,20 +108,6 @@ std::string SceneFeatures::describe() const
     text << "lights:        " << (lights.empty() ? "none" : lights) << "\n";
     text << "environment:   " << toString(environment) << "\n";
     return text.str();
-}
-
-const char* toString(PrimitiveKind kind)
-{
-    switch (kind) {
-    case PrimitiveKind::Sphere: return "sphere";
-    case PrimitiveKind::Polyhedron: return "polyhedron";
-    case PrimitiveKind::Box: return "box";
-    case PrimitiveKind::Torus: return "torus";
-    case PrimitiveKind::Cone: return "cone";
-    case PrimitiveKind::Cylinder: return "cylinder";
-    case PrimitiveKind::Disk: return "disk";
-    }
-    return "?";
 }
 
 const char* toString(MaterialKind kind)

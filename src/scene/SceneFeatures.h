@@ -8,13 +8,10 @@
 
 namespace scene {
 
-enum class PrimitiveKind { Sphere, Polyhedron, Box, Torus, Cone, Cylinder, Disk };
-
 // What a scene uses, so that the shader can be built with nothing else (see
 // render/SceneShaderGenerator). Only what is referenced counts: a finish no object uses adds
 // no material.
 struct SceneFeatures {
-    std::set<PrimitiveKind> primitives;
     std::map<std::string, std::filesystem::path> userSdfs;  // name -> file
     std::set<CsgOperator> csgOperators;
     bool transforms = false;
@@ -29,7 +26,6 @@ struct SceneFeatures {
     bool sphereLights = false;
     EnvironmentKind environment = EnvironmentKind::Sky;
 
-    bool has(PrimitiveKind kind) const { return primitives.count(kind) != 0; }
     bool has(MaterialKind kind) const { return materials.count(kind) != 0; }
     bool has(PigmentKind kind) const { return pigments.count(kind) != 0; }
     bool has(CsgOperator op) const { return csgOperators.count(op) != 0; }
@@ -44,7 +40,6 @@ struct SceneFeatures {
 
 SceneFeatures analyseFeatures(const Scene& scene);
 
-const char* toString(PrimitiveKind kind);
 const char* toString(MaterialKind kind);
 const char* toString(PigmentKind kind);
 const char* toString(CsgOperator op);

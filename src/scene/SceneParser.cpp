@@ -1,6 +1,8 @@
 #include "scene/SceneParser.h"
 
+#include "scene/PrimitiveKinds.h"
 #include "scene/SceneError.h"
+#include "scene/TokenCursor.h"
 #include "scene/Tokenizer.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -30,16 +32,23 @@ const std::set<std::string> kCsgWords = {"union",          "intersection",
                                          "difference",     "smooth_union",
                                          "smooth_intersection", "smooth_difference"};
 const std::set<std::string> kTransformWords = {"translate", "rotate", "scale"};
-const std::set<std::string> kPrimitiveWords = {"sphere", "polyhedron", "box",  "torus",
-                                               "cone",   "cylinder",   "disk"};
 const std::set<std::string> kSectionKeywords = {"environment"};
 
 // What a scene file may make the parser hold (docs/SCENE_FORMAT.md, "Limits"): far beyond any
 // scene this renderer can draw, and small enough that no file can exhaust memory or the stack.
-constexpr int kMaxCount = 100000;                 // lights, pigments, finishes, objects, planes
+constexpr int kMaxCount = TokenCursor::kMaxCount;  // lights, pigments, finishes, objects, planes
 constexpr int kMaxNestingDepth = 64;              // CSG blocks and transforms, one inside another
 constexpr std::size_t kMaxTokens = 4u << 20;      // words in the file
 constexpr std::size_t kMaxFileBytes = 64u << 20;  // bytes in the file
+
+// "sphere, polyhedron, ...": every primitive's keyword, for messages.
+std::string primitiveWords()
+{
+    std::string words;
+    for (const PrimitiveKind& kind : primitiveKinds())
+        words += (words.empty() ? "" : ", ") + std::string(kind.keyword);
+    return words;
+}
 
 bool isIdentifier(const std::string& word)
 {
@@ -98,10 +107,10 @@ void readUserSdfDeclarations(UserSdf& user)
     }
 }
 
-class Parser {
+class Parser : private TokenCursor {
 public:
     Parser(std::vector<Token> tokens, std::string fileName, const FileLookup& lookup)
-        : tokens_(std::move(tokens)), fileName_(std::move(fileName)), lookup_(lookup)
+        : TokenCursor(std::move(tokens), std::move(fileName)), lookup_(lookup)
     {
     }
 
@@ -127,160 +136,6 @@ public:
     }
 
 private:
-    // --- token access -------------------------------------------------------------------
-
-    bool atEnd() const { return position_ >= tokens_.size(); }
-
-    const Token* peek() const { return atEnd() ? nullptr : &tokens_[position_]; }
-
-    const Token& next(const std::string& expected)
-    {
-        if (atEnd())
-            fail(expected);
-        return tokens_[position_++];
-    }
-
-    // Error at the token about to be read (or at the end of the file).
-    [[noreturn]] void fail(const std::string& expected) const
-    {
-        if (atEnd()) {
-            const int line = tokens_.empty() ? 1 : tokens_.back().line;
-            throw SceneError(fileName_, line, "", expected);
-        }
-        failAt(tokens_[position_], expected);
-    }
-
-    [[noreturn]] void failAt(const Token& token, const std::string& expected) const
-    {
-        throw SceneError(fileName_, token.line, token.text, expected);
-    }
-
-    // Error at the token that was at `mark` (a position saved before reading it).
-    [[noreturn]] void failAtMark(std::size_t mark, const std::string& expected) const
-    {
-        if (mark >= tokens_.size()) {
-            const int line = tokens_.empty() ? 1 : tokens_.back().line;
-            throw SceneError(fileName_, line, "", expected);
-        }
-        failAt(tokens_[mark], expected);
-    }
-
-    // --- values -------------------------------------------------------------------------
-
-    float number(const std::string& what)
-    {
-        const std::string expected = "a number (" + what + ")";
-        const Token& token = next(expected);
-        const std::string& text = token.text;
-        const char* first = text.data();
-        const char* last = text.data() + text.size();
-        if (first != last && *first == '+')
-            ++first;
-        float value = 0.0f;
-        const auto [end, error] = std::from_chars(first, last, value);
-        if (error == std::errc::result_out_of_range && end == last)
-            failAt(token, expected + outOfFloatRange(text));
-        if (error != std::errc() || end != last || !std::isfinite(value))
-            failAt(token, expected);
-        return value;
-    }
-
-    // Why a well-formed decimal number does not fit a float: too large, or too small and not
-    // zero. Read in long double, whose range is far wider (a longer number still comes back as
-    // HUGE_VALL or 0, and that is enough to tell the two apart).
-    static std::string outOfFloatRange(const std::string& text)
-    {
-        const long double value = std::strtold(text.c_str(), nullptr);
-        if (std::fabs(value) > FLT_MAX)
-            return "; this one overflows a 32-bit float, whose largest magnitude is 3.4e38";
-        return "; this one underflows a 32-bit float, whose smallest non-zero magnitude is "
-               "1.4e-45 (write 0 for zero)";
-    }
-
-    float numberAtLeast(const std::string& what, float minimum)
-    {
-        const std::size_t token = position_;
-        const float value = number(what);
-        if (value < minimum)
-            failAtMark(token, "a number of at least " + formatNumber(minimum) + " (" + what + ")");
-        return value;
-    }
-
-    float positiveNumber(const std::string& what)
-    {
-        const std::size_t token = position_;
-        const float value = number(what);
-        if (!(value > 0.0f))
-            failAtMark(token, "a positive number (" + what + ")");
-        return value;
-    }
-
-    glm::vec3 vector3(const std::string& what)
-    {
-        const float x = number(what + ", x");
-        const float y = number(what + ", y");
-        const float z = number(what + ", z");
-        return {x, y, z};
-    }
-
-    glm::vec3 colour(const std::string& what)
-    {
-        const float r = numberAtLeast(what + ", red", 0.0f);
-        const float g = numberAtLeast(what + ", green", 0.0f);
-        const float b = numberAtLeast(what + ", blue", 0.0f);
-        return {r, g, b};
-    }
-
-    // A count bounds what the parser allocates, so it is refused at once when above
-    // kMaxCount rather than read until the file runs out.
-    int count(const std::string& what)
-    {
-        const std::string expected =
-            "a count from 0 to " + std::to_string(kMaxCount) + " (" + what + ")";
-        const Token& token = next(expected);
-        long long value = 0;
-        const char* last = token.text.data() + token.text.size();
-        const auto [end, error] = std::from_chars(token.text.data(), last, value);
-        if (end != last || (error != std::errc() && error != std::errc::result_out_of_range))
-            failAt(token, "a whole number: " + expected);
-        if (error != std::errc() || value < 0 || value > kMaxCount)
-            failAt(token, expected + (value < 0 ? "" : "; a scene holds at most " +
-                                                           std::to_string(kMaxCount)));
-        return static_cast<int>(value);
-    }
-
-    int index(const std::string& what, std::size_t size)
-    {
-        const std::string expected =
-            size == 0 ? "no " + what + " index: the file defines none"
-                      : "a " + what + " index from 0 to " + std::to_string(size - 1);
-        const Token* token = peek();
-        if (token == nullptr)
-            fail(expected);
-        int value = 0;
-        const char* last = token->text.data() + token->text.size();
-        const auto [end, error] = std::from_chars(token->text.data(), last, value);
-        if (error != std::errc() || end != last || value < 0 ||
-            static_cast<std::size_t>(value) >= size)
-            fail(expected);
-        ++position_;
-        return value;
-    }
-
-    void expectWord(const std::string& word)
-    {
-        const Token& token = next("'" + word + "'");
-        if (token.text != word)
-            failAt(token, "'" + word + "'");
-    }
-
-    static std::string formatNumber(float value)
-    {
-        std::ostringstream stream;
-        stream << value;
-        return stream.str();
-    }
-
     // --- sections -----------------------------------------------------------------------
 
     void parseSectionKeywords(Scene& scene)
@@ -288,7 +143,7 @@ private:
         while (const Token* token = peek()) {
             if (kSectionKeywords.count(token->text) == 0)
                 return;
-            ++position_;
+            skip();
             if (token->text == "environment")
                 parseEnvironment(scene.environment);
         }
@@ -301,14 +156,14 @@ private:
         if (token == nullptr)
             fail(expected);
         if (token->text == "none" || token->text == "black") {
-            ++position_;
+            skip();
             environment = {EnvironmentKind::None, glm::vec3(0.0f)};
         } else if (token->text == "sky") {
-            ++position_;
+            skip();
             environment = {EnvironmentKind::Sky, glm::vec3(0.0f)};
         } else {
             if (token->text == "constant")
-                ++position_;
+                skip();
             environment = {EnvironmentKind::Constant, colour("environment radiance")};
         }
     }
@@ -316,11 +171,11 @@ private:
     void parseCamera(Camera& camera)
     {
         camera.eye = vector3("camera eye position");
-        const std::size_t targetToken = position_;
+        const std::size_t targetToken = mark();
         camera.target = vector3("camera target point");
-        const std::size_t upToken = position_;
+        const std::size_t upToken = mark();
         camera.up = vector3("camera up vector");
-        const std::size_t fovToken = position_;
+        const std::size_t fovToken = mark();
         camera.verticalFieldOfViewDegrees = number("vertical field of view in degrees");
 
         // In double, as cameraFrame() computes: a float's squared length overflows for far
@@ -399,7 +254,7 @@ private:
             finish.phongExponent = numberAtLeast(which + " Blinn-Phong exponent", 0.0f);
             finish.reflection = number(which + " kr");
             finish.transmission = number(which + " kt");
-            const std::size_t iorToken = position_;
+            const std::size_t iorToken = mark();
             finish.ior = number(which + " index of refraction");
             if (finish.transmission > 0.0f && !(finish.ior > 0.0f))
                 failAtMark(iorToken, "a positive index of refraction (" + which +
@@ -418,7 +273,7 @@ private:
             object.line = peek() != nullptr ? peek()->line : 0;
             object.pigment = index("pigment", scene.pigments.size());
             object.finish = index("finish", scene.finishes.size());
-            const std::size_t typeToken = position_;
+            const std::size_t typeToken = mark();
             object.shape = parseShape(which, 0);
             const bool emissive = scene.finishes[object.finish].isEmissive();
             if (emissive && !std::holds_alternative<Sphere>(object.shape.geometry))
@@ -433,10 +288,9 @@ private:
     // `depth`: the CSG blocks and transforms this shape is inside.
     Shape parseShape(const std::string& which, int depth)
     {
-        const std::string expected =
-            "an object type for " + which +
-            " (sphere, polyhedron, box, torus, cone, cylinder, disk, a CSG operation, a "
-            "transform, or the name of a user SDF)";
+        const std::string expected = "an object type for " + which + " (" + primitiveWords() +
+                                     ", a CSG operation, a transform, or the name of a user "
+                                     "SDF)";
         const Token& type = next(expected);
         const std::string& word = type.text;
 
@@ -448,80 +302,8 @@ private:
             return parseTransformed(type, which, depth + 1);
         if (kCsgWords.count(word) != 0)
             return {parseCsg(type, which, depth + 1), std::nullopt};
-        if (word == "sphere") {
-            Sphere sphere;
-            sphere.center = vector3("sphere centre");
-            // A sphere of radius 0 has no surface: it could only show as a speck the size of
-            // the hit tolerance, so it is refused rather than drawn wrongly.
-            sphere.radius = positiveNumber("sphere radius");
-            return {sphere, std::nullopt};
-        }
-        if (word == "polyhedron") {
-            Polyhedron polyhedron;
-            const std::size_t countToken = position_;
-            const int planes = count("number of polyhedron planes");
-            if (planes == 0)
-                failAtMark(countToken, "at least one plane in the polyhedron");
-            for (int j = 0; j < planes; ++j) {
-                const std::string plane =
-                    "plane " + std::to_string(j + 1) + " of " + std::to_string(planes);
-                const std::size_t first = position_;
-                const glm::vec3 normal = vector3(plane + " normal (a b c)");
-                const float offset = number(plane + " offset d");
-                if (!(glm::length(normal) > 0.0f))
-                    failAtMark(first, "a plane normal (a b c) that is not zero");
-                polyhedron.planes.emplace_back(normal, offset);
-            }
-            return {polyhedron, std::nullopt};
-        }
-        if (word == "box") {
-            Box box;
-            box.center = vector3("box centre");
-            const std::size_t first = position_;
-            box.halfExtents.x = numberAtLeast("box half-extent x", 0.0f);
-            box.halfExtents.y = numberAtLeast("box half-extent y", 0.0f);
-            box.halfExtents.z = numberAtLeast("box half-extent z", 0.0f);
-            // One zero extent leaves a rectangle, a surface; two leave a line, which has none.
-            const int zeros = (box.halfExtents.x == 0.0f) + (box.halfExtents.y == 0.0f) +
-                              (box.halfExtents.z == 0.0f);
-            if (zeros > 1)
-                failAtMark(first, "box half-extents of which at most one is zero");
-            return {box, std::nullopt};
-        }
-        if (word == "torus") {
-            Torus torus;
-            torus.center = vector3("torus centre");
-            torus.majorRadius = numberAtLeast("torus major radius", 0.0f);
-            torus.minorRadius = positiveNumber("torus minor radius");
-            return {torus, std::nullopt};
-        }
-        if (word == "cone") {
-            Cone cone;
-            cone.apex = vector3("cone apex");
-            const std::size_t first = position_;
-            cone.slope.x = number("cone slope a");
-            cone.slope.y = number("cone slope b");
-            if (!(glm::length(cone.slope) > 0.0f))
-                failAtMark(first, "a cone slope (a b) that is not zero");
-            return {cone, std::nullopt};
-        }
-        if (word == "cylinder") {
-            Cylinder cylinder;
-            cylinder.center = vector3("cylinder centre");
-            cylinder.radius = positiveNumber("cylinder radius");
-            cylinder.halfHeight = numberAtLeast("cylinder half-height", 0.0f);
-            return {cylinder, std::nullopt};
-        }
-        if (word == "disk") {
-            Disk disk;
-            disk.center = vector3("disk centre");
-            const std::size_t first = position_;
-            disk.normal = vector3("disk normal");
-            if (!(glm::length(disk.normal) > 0.0f))
-                failAtMark(first, "a disk normal that is not zero");
-            disk.radius = positiveNumber("disk radius");
-            return {disk, std::nullopt};
-        }
+        if (const PrimitiveKind* primitive = findPrimitiveKind(word))
+            return {primitive->read(*this), std::nullopt};
         if (word == "{" || word == "}" || !isIdentifier(word))
             failAt(type, expected);
 
@@ -529,11 +311,12 @@ private:
         user.name = word;
         const auto found = lookup_.findUserSdf(word);
         if (!found)
-            failAt(type, "an object type, or a user SDF with a shader file " + word +
-                             ".glsl (looked in " + joinFolders(lookup_.shaderFolders()) + ")");
+            failAt(type, "an object type, or a user SDF with a shader file " +
+                             shownToken(word) + ".glsl (looked in " +
+                             joinFolders(lookup_.shaderFolders()) + ")");
         user.sourcePath = *found;
         readUserSdfDeclarations(user);
-        user.position = vector3(word + " position");
+        user.position = vector3(shownToken(word) + " position");
         return {user, std::nullopt};
     }
 
@@ -543,7 +326,7 @@ private:
         if (keyword.text == "translate") {
             transform.translation = vector3("translation");
         } else if (keyword.text == "rotate") {
-            const std::size_t first = position_;
+            const std::size_t first = mark();
             const glm::vec3 axis = vector3("rotation axis");
             const float degrees = number("rotation angle in degrees");
             if (!(glm::length(axis) > 0.0f))
@@ -601,13 +384,10 @@ private:
         if (node.children.size() < 2)
             fail( "at least two shapes inside '" + word + "' (opened on line " +
                                  std::to_string(keyword.line) + ")");
-        ++position_;
+        skip();
         return node;
     }
 
-    std::vector<Token> tokens_;
-    std::size_t position_ = 0;
-    std::string fileName_;
     const FileLookup& lookup_;
 };
 
@@ -616,7 +396,7 @@ private:
 bool isReservedShapeWord(const std::string& word)
 {
     return kCsgWords.count(word) != 0 || kTransformWords.count(word) != 0 ||
-           kPrimitiveWords.count(word) != 0;
+           findPrimitiveKind(word) != nullptr;
 }
 
 Scene parseSceneText(const std::string& text, const std::string& fileName,

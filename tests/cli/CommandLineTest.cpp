@@ -293,6 +293,16 @@ TEST_F(CommandLine, HelpPrintsUsageAndSucceeds)
     EXPECT_TRUE(result.standardError.empty()) << result.standardError;
 }
 
+TEST_F(CommandLine, HelpLinesFitIn100Columns)
+{
+    const ProcessResult result = run({"--help"});
+    ASSERT_TRUE(result.exited && result.exitStatus == 0) << describe(result);
+    std::istringstream lines(result.standardOutput);
+    std::string line;
+    while (std::getline(lines, line))
+        EXPECT_LE(line.size(), 100u) << "a --help line of " << line.size() << " columns: " << line;
+}
+
 // Every extension --output accepts, with what it holds.
 const std::vector<std::string> kOutputExtensions = {".ppm", ".png", ".jpg", ".tif",
                                                     ".exr", ".pfm", ".hdr"};

@@ -39,15 +39,8 @@ ReloadDecision decide(const std::string& before, const std::string& after,
     const auto shownCode = generateSceneShaderCode(shown, {ShaderVariant::Specialized, environment});
     const auto editedCode =
         generateSceneShaderCode(edited, {ShaderVariant::Specialized, environment});
-    std::vector<fs::path> shownTextures;
-    std::vector<fs::path> editedTextures;
-    for (const scene::Pigment& pigment : shown.pigments)
-        if (pigment.kind == scene::PigmentKind::Texture)
-            shownTextures.push_back(pigment.texturePath);
-    for (const scene::Pigment& pigment : edited.pigments)
-        if (pigment.kind == scene::PigmentKind::Texture)
-            editedTextures.push_back(pigment.texturePath);
-    return decideReload(shownCode, editedCode, shownTextures, editedTextures, changedFiles);
+    return decideReload(shownCode, render::packSceneUniforms(shown, shownCode), editedCode,
+                        render::packSceneUniforms(edited, editedCode), changedFiles);
 }
 
 TEST(ReloadDecision, AColourIsAValue)
@@ -112,6 +105,43 @@ TEST(ReloadDecision, AnEditedTextureReloadsTexturesWithoutARebuild)
     EXPECT_FALSE(edited.rebuildShader);
     const ReloadDecision untouched = decide(textured, textured);
     EXPECT_FALSE(untouched.reloadTextures);
+}
+
+TEST(ReloadDecision, TheSameSceneWrittenAnotherWayChangesNothing)
+{
+    EXPECT_TRUE(decide(scene(), scene()).changesNothing) << "saved unchanged";
+    const ReloadDecision decision =
+        decide(scene(), "# a comment\n\n" + scene("0 1  4.0", "0.80 0.1 .1"));
+    EXPECT_TRUE(decision.changesNothing) << "a comment, spacing, numbers written another way";
+    EXPECT_FALSE(decision.rebuildShader);
+    EXPECT_FALSE(decision.reloadTextures);
+}
+
+TEST(ReloadDecision, AnyChangeOfValueCodeOrFileIsAChange)
+{
+    EXPECT_FALSE(decide(scene(), scene("0 1 4", "0.1 0.1 0.8")).changesNothing) << "a colour";
+    EXPECT_FALSE(decide(scene(), scene("0 1 5")).changesNothing) << "the camera";
+    EXPECT_FALSE(decide(scene(), scene("0 1 4", "0.8 0.1 0.1", "0 0 0  0 0 0 0",
+                                       "0 0 sphere 0 0.5 0  0.6"))
+                     .changesNothing)
+        << "a radius";
+    EXPECT_FALSE(decide(scene(), scene("0 1 4", "0.8 0.1 0.1", "0 0 0  0 0 0 0",
+                                       "0 0 box 0 0.5 0  0.5 0.5 0.5"))
+                     .changesNothing)
+        << "another shape";
+    const std::string withUserSdf =
+        scene("0 1 4", "0.8 0.1 0.1", "0 0 0  0 0 0 0", "0 0 twisted_bar 0 0.4 0");
+    const fs::path file = testing_support::testScenesDirectory() / "twisted_bar.glsl";
+    EXPECT_TRUE(decide(withUserSdf, withUserSdf).changesNothing);
+    EXPECT_FALSE(decide(withUserSdf, withUserSdf, {file}).changesNothing)
+        << "the user SDF file's bytes changed";
+    std::string textured = scene();
+    const std::string solid = "solid 0.8 0.1 0.1";
+    textured.replace(textured.find(solid), solid.size(), "texmap brick.ppm 1");
+    const fs::path brick = scene::FileLookup::dataDirectory() / "textures" / "brick.ppm";
+    EXPECT_TRUE(decide(textured, textured).changesNothing);
+    EXPECT_FALSE(decide(textured, textured, {brick}).changesNothing)
+        << "the texture's bytes changed";
 }
 
 TEST(ReloadDecision, TheCameraIsReplacedOnlyWhenItsLinesChanged)

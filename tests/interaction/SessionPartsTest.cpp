@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
 #include <unistd.h>
 
@@ -69,6 +70,31 @@ TEST_F(FileWatcherTest, AFileStillWatchedKeepsItsLastSeenStateAcrossWatch)
     write("scene.in", "edited meanwhile");
     watcher.watch({scene, write("texture.ppm", "x")});
     EXPECT_EQ(watcher.changedFiles(), std::vector<fs::path>{scene});
+}
+
+TEST_F(FileWatcherTest, TouchingAFileOrSavingItUnchangedIsNoChange)
+{
+    const fs::path scene = write("scene.in", "one");
+    app::FileWatcher watcher;
+    watcher.watch({scene});
+    fs::last_write_time(scene, fs::last_write_time(scene) + std::chrono::seconds(10));
+    EXPECT_TRUE(watcher.changedFiles().empty()) << "touched: a new time, the same bytes";
+    // Saved unchanged as editors save: a new file with the same bytes renamed over the old.
+    std::ofstream(folder_ / "scene.in.new") << "one";
+    fs::rename(folder_ / "scene.in.new", scene);
+    fs::last_write_time(scene, fs::last_write_time(scene) + std::chrono::seconds(20));
+    EXPECT_TRUE(watcher.changedFiles().empty()) << "saved unchanged: the same bytes";
+}
+
+TEST_F(FileWatcherTest, NewBytesOfTheSameSizeAreAChange)
+{
+    const fs::path scene = write("scene.in", "one");
+    app::FileWatcher watcher;
+    watcher.watch({scene});
+    write("scene.in", "two");
+    fs::last_write_time(scene, fs::last_write_time(scene) + std::chrono::seconds(10));
+    EXPECT_EQ(watcher.changedFiles(), std::vector<fs::path>{scene});
+    EXPECT_TRUE(watcher.changedFiles().empty()) << "a change is reported once";
 }
 
 TEST(SceneFiles, AreTheSceneItsUserSdfFilesAndItsTextures)

@@ -62,6 +62,21 @@ TEST(InteractiveRenderer, AValuesEditReuploadsAndRendersAsTheEditedSceneLoadedAf
         << "same program, same uniforms, same seed: the same image";
 }
 
+TEST(InteractiveRenderer, AnEditThatChangesNothingOnScreenKeepsTheAccumulation)
+{
+    render::ProgressiveRenderer renderer(sceneFromText(sceneText()), 48, 36, settingsWithSeed(5));
+    renderSamples(renderer, 4);
+    const io::Image before = renderer.radiance();
+    // The same scene with a comment and other spacing: the same code, the same uniforms.
+    const render::ReloadDecision decision =
+        renderer.setScene(sceneFromText("# saved again\n" + sceneText("0.80 0.1  0.1")));
+    EXPECT_TRUE(decision.changesNothing);
+    EXPECT_EQ(renderer.samplesPerPixel(), 4) << "nothing changed, so the samples are kept";
+    EXPECT_EQ(largestDifference(renderer.radiance(), before), 0.0);
+    renderSamples(renderer, 6);
+    EXPECT_EQ(renderer.samplesPerPixel(), 6) << "and the accumulation goes on";
+}
+
 TEST(InteractiveRenderer, AnEditThatDoesNotCompileLeavesTheRendererAsItWas)
 {
     const fs::path folder = fs::temp_directory_path() /
@@ -133,6 +148,73 @@ TEST(InteractiveRenderer, ExposureBrightensThePictureAndLeavesTheRadiance)
         sumBright += bright.pixels[i];
     }
     EXPECT_GT(sumBright, 1.2 * sumNormal);
+}
+
+double meanRadiance(const io::Image& image)
+{
+    double sum = 0.0;
+    for (float value : image.pixels)
+        sum += value;
+    return sum / static_cast<double>(image.pixels.size());
+}
+
+// The window's renderer: the environment read from a uniform, so that the panel can switch it.
+render::RenderSettings windowSettings(std::uint64_t seed)
+{
+    render::RenderSettings settings = settingsWithSeed(seed);
+    settings.switchableEnvironment = true;
+    return settings;
+}
+
+// The panel's settings (hit tolerance, max bounces, the environment) go through setSettings:
+// each restarts the accumulation and changes the picture, and setting it back gives the
+// first picture bit for bit, so nothing else moved.
+TEST(InteractiveRenderer, EachPanelSettingChangesThePictureAndSettingItBackRestoresIt)
+{
+    const render::RenderSettings initial = windowSettings(6);
+    render::ProgressiveRenderer renderer(sceneFromText(sceneText()), 48, 36, initial);
+    renderSamples(renderer, 4);
+    const io::Image base = renderer.radiance();
+
+    auto renderWith = [&](const render::RenderSettings& settings) {
+        renderer.setSettings(settings);
+        EXPECT_EQ(renderer.samplesPerPixel(), 0) << "a new setting restarts the accumulation";
+        renderSamples(renderer, 4);
+        return renderer.radiance();
+    };
+    render::RenderSettings noEnvironment = initial;
+    noEnvironment.environmentLight = false;
+    EXPECT_LT(meanRadiance(renderWith(noEnvironment)), 0.9 * meanRadiance(base))
+        << "without the sky only the point light lights the scene";
+    EXPECT_EQ(largestDifference(renderWith(initial), base), 0.0) << "the environment back on";
+
+    render::RenderSettings oneBounce = initial;
+    oneBounce.maxBounces = 1;
+    EXPECT_LT(meanRadiance(renderWith(oneBounce)), meanRadiance(base))
+        << "one bounce leaves out the light of the later ones";
+    EXPECT_EQ(largestDifference(renderWith(initial), base), 0.0) << "16 bounces again";
+
+    render::RenderSettings looseHits = initial;
+    looseHits.hitTolerance = 4.0f;
+    EXPECT_GT(largestDifference(renderWith(looseHits), base), 0.0)
+        << "a hit tolerance of 4 pixels moves the silhouettes";
+    EXPECT_EQ(largestDifference(renderWith(initial), base), 0.0) << "0.25 pixels again";
+}
+
+TEST(InteractiveRenderer, PanelSettingsRenderAsTheSameSettingsGivenAtTheStart)
+{
+    render::RenderSettings tuned = windowSettings(7);
+    tuned.environmentLight = false;
+    tuned.maxBounces = 2;
+    tuned.hitTolerance = 1.0f;
+    render::ProgressiveRenderer renderer(sceneFromText(sceneText()), 48, 36, windowSettings(7));
+    renderSamples(renderer, 2);
+    renderer.setSettings(tuned);
+    renderSamples(renderer, 4);
+    render::ProgressiveRenderer fresh(sceneFromText(sceneText()), 48, 36, tuned);
+    renderSamples(fresh, 4);
+    EXPECT_EQ(largestDifference(renderer.radiance(), fresh.radiance()), 0.0)
+        << "the same program, uniforms and seed: the same image";
 }
 
 // Two renders of different seeds differ by sqrt(2) times the RMS error of each, so the

@@ -82,6 +82,14 @@ TEST(ShapeBounds, FiniteShapesHoldTheirExtremePoints)
     EXPECT_TRUE(containsSphere(boundOf("0 0 disk 0 0 0 0 1 0 3\n"), {3.0f, 0.0f, 0.0f}, 0.0f));
 }
 
+TEST(ShapeBounds, RoundedBoxHoldsItsFlatFacesAndRoundedCorners)
+{
+    const ShapeBound bound = boundOf("0 0 rounded_box 1 0 0 1 2 3 0.5\n");
+    EXPECT_TRUE(containsSphere(bound, {1.0f, 2.0f, 0.0f}, 0.0f)) << "the middle of a face";
+    // The corner's rounding: a sphere of the radius about the inner box's corner.
+    EXPECT_TRUE(containsSphere(bound, {1.5f, 1.5f, 2.5f}, 0.5f));
+}
+
 TEST(ShapeBounds, UserSdfIsFiniteOnlyWithADeclaredBound)
 {
     const ShapeBound declared = boundOf("0 0 twisted_bar 1 0 0\n");

@@ -13,13 +13,9 @@ SceneFeatures classicFeatures(int number)
                                           ("scene" + std::to_string(number) + ".in")));
 }
 
-TEST(SceneFeatures, ClassicSceneThreeUsesEveryAnalyticPrimitiveBlinnPhongAndAPointLight)
+TEST(SceneFeatures, ClassicSceneThreeUsesBlinnPhongAndAPointLight)
 {
     const SceneFeatures features = classicFeatures(3);
-    EXPECT_EQ(features.primitives,
-              (std::set<PrimitiveKind>{PrimitiveKind::Sphere, PrimitiveKind::Polyhedron,
-                                       PrimitiveKind::Box, PrimitiveKind::Torus,
-                                       PrimitiveKind::Cone, PrimitiveKind::Cylinder}));
     EXPECT_EQ(features.materials, std::set<MaterialKind>{MaterialKind::BlinnPhong})
         << "scene 3's emissive finish is used by no object, so it adds no material";
     EXPECT_EQ(features.pigments, std::set<PigmentKind>{PigmentKind::Solid});
@@ -38,7 +34,6 @@ TEST(SceneFeatures, ClassicSceneFourUsesTheKnotAndATexture)
     EXPECT_EQ(features.userSdfs.begin()->first, "knot");
     EXPECT_TRUE(features.has(PigmentKind::Texture));
     EXPECT_TRUE(features.has(PigmentKind::Solid));
-    EXPECT_EQ(features.primitives, std::set<PrimitiveKind>{PrimitiveKind::Polyhedron});
 }
 
 TEST(SceneFeatures, ClassicSceneOneUsesEveryMaterialItsFinishesNameAndASphereLight)
@@ -60,9 +55,6 @@ TEST(SceneFeatures, CsgOperatorsAreCollectedFromNestedBlocks)
     EXPECT_EQ(features.csgOperators,
               (std::set<CsgOperator>{CsgOperator::PolynomialSmoothDifference,
                                      CsgOperator::Intersection}));
-    EXPECT_EQ(features.primitives,
-              (std::set<PrimitiveKind>{PrimitiveKind::Box, PrimitiveKind::Sphere,
-                                       PrimitiveKind::Torus}));
     EXPECT_FALSE(features.transforms);
 }
 
@@ -93,7 +85,6 @@ TEST(SceneFeatures, EverythingHasEveryFeatureAndTheScenesUserSdfs)
 {
     const Scene scene = parse(sceneWithObjects(1, "0 0 twisted_bar 0 0 0\n"));
     const SceneFeatures features = SceneFeatures::everything(scene);
-    EXPECT_EQ(features.primitives.size(), 7u);
     EXPECT_EQ(features.csgOperators.size(), 9u);
     EXPECT_EQ(features.materials.size(), 4u);
     EXPECT_EQ(features.pigments.size(), 3u);

@@ -39,6 +39,20 @@ TEST(SceneMessages, AHugeTokenIsShownCutTo40CharactersWithAnEllipsis)
         << message.substr(0, 300);
 }
 
+// The word is a valid identifier, so the parser takes it for a user SDF and names the shader
+// file it looked for: that name, too, is cut.
+TEST(SceneMessages, AHugeWordWhereAnObjectTypeBelongsIsShownCutInEveryPartOfTheMessage)
+{
+    const std::string huge(10 * 1024 * 1024, 'x');
+    const std::string message = messageOf(sceneWithObjects(1, "0 0 " + huge + " 0 0 0\n"));
+    EXPECT_LT(message.size(), 400u) << "the message holds " << message.size() << " characters";
+    EXPECT_NE(message.find("read '" + std::string(40, 'x') + "...'"), std::string::npos)
+        << message.substr(0, 400);
+    EXPECT_NE(message.find("shader file " + std::string(40, 'x') + "....glsl"),
+              std::string::npos)
+        << message.substr(0, 400);
+}
+
 TEST(SceneMessages, ATokenOfExactly40CharactersIsShownWhole)
 {
     const std::string token(40, 'y');

@@ -215,6 +215,21 @@ TEST(SceneFormat, BoxIsCentreAndHalfExtents)
     EXPECT_TRUE(near(box.halfExtents, {0.5f, 0.25f, 0.125f}));
 }
 
+TEST(SceneFormat, RoundedBoxIsCentreHalfExtentsAndEdgeRadius)
+{
+    const Scene scene = parse(sceneWithObjects(1, "0 0 rounded_box 1 2 3  0.5 0.25 0.75  0.2\n"));
+    const auto& box = std::get<RoundedBox>(scene.objects[0].shape.geometry);
+    EXPECT_TRUE(near(box.center, {1.0f, 2.0f, 3.0f}));
+    EXPECT_TRUE(near(box.halfExtents, {0.5f, 0.25f, 0.75f}));
+    EXPECT_FLOAT_EQ(box.radius, 0.2f);
+}
+
+TEST(SceneFormat, RoundedBoxEdgeRadiusIsAtMostItsSmallestHalfExtent)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 rounded_box 0 0 0  0.5 0.25 0.75  0.3\n"), 13,
+                        "0.3", "an edge radius of at most the smallest half-extent, 0.25"));
+}
+
 TEST(SceneFormat, TorusIsCentreMajorAndMinorRadius)
 {
     const Scene scene = parse(kEveryObjectType);

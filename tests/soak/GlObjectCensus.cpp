@@ -1,10 +1,11 @@
 // The soak run's in-process half (tools/soak.sh; not a ctest test): renders a scene frame by
 // frame in one GL context, replaces the scene every few seconds (ProgressiveRenderer::setScene,
 // alternating two scenes whose shaders differ, so the program is rebuilt each time), and once
-// a minute prints the process's resident memory and how many GL objects of each kind are
-// alive, found by asking glIs* of every name up to a bound. A leak shows as a count or the
-// memory that grows with the frames.
+// a minute (or every REPORT_SECONDS) prints the process's resident memory and how many GL
+// objects of each kind are alive, found by asking glIs* of every name up to a bound. A leak
+// shows as a count or the memory that grows with the frames.
 //   gl_object_census SCENE_A SCENE_B WIDTH HEIGHT FRAMES MAX_SECONDS RELOAD_SECONDS
+//                    [REPORT_SECONDS]
 #include "gl/EntryPoints.h"
 #include "platform/ContextFactory.h"
 #include "render/ProgressiveRenderer.h"
@@ -64,9 +65,9 @@ Census takeCensus()
 
 int main(int argc, char* argv[])
 {
-    if (argc != 8) {
+    if (argc != 8 && argc != 9) {
         std::cerr << "usage: gl_object_census SCENE_A SCENE_B WIDTH HEIGHT FRAMES MAX_SECONDS "
-                     "RELOAD_SECONDS\n";
+                     "RELOAD_SECONDS [REPORT_SECONDS]\n";
         return 2;
     }
     try {
@@ -77,6 +78,7 @@ int main(int argc, char* argv[])
         const long frames = std::atol(argv[5]);
         const double maxSeconds = std::atof(argv[6]);
         const double reloadSeconds = std::atof(argv[7]);
+        const double reportSeconds = argc == 9 ? std::atof(argv[8]) : 60.0;
 
         platform::ContextRequest request;
         request.headless = !platform::displayAvailable();
@@ -119,7 +121,7 @@ int main(int argc, char* argv[])
                 renderer.setScene(scenes[reloads % 2]);
                 lastReload = Clock::now();
             }
-            if (since(lastReport) >= 60.0) {
+            if (since(lastReport) >= reportSeconds) {
                 report(frame + 1, reloads);
                 lastReport = Clock::now();
             }

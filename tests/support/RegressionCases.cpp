@@ -43,6 +43,7 @@ const std::vector<RegressionCase>& regressionCases()
         feature("prim_cone", "the cone primitive"),
         feature("prim_cylinder", "the cylinder primitive"),
         feature("prim_disk", "the disk primitive"),
+        feature("prim_rounded_box", "the rounded box primitive"),
         feature("prim_user_sdf", "a user SDF with @bound and @lipschitz"),
         feature("mat_lambertian", "the Lambertian material"),
         feature("mat_mirror", "the mirror material"),

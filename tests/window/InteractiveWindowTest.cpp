@@ -80,11 +80,13 @@ protected:
         fs::rename(temporary, folder_ / "scene.in");
     }
 
-    // Starts the program on folder/scene.in in a 160x120 window and waits for the window;
-    // with `hidePanel`, Tab hides the statistics panel, which would cover the picture.
-    void start(const std::vector<std::string>& options = {}, bool hidePanel = true)
+    // Starts the program on folder/scene.in in a window of the size given (160x120 unless
+    // told) and waits for the window. The statistics panel starts hidden; `showPanel` shows
+    // it with Tab.
+    void start(const std::vector<std::string>& options = {}, bool showPanel = false,
+               const std::string& width = "160", const std::string& height = "120")
     {
-        std::vector<std::string> arguments = {RAYTRACER_EXECUTABLE, "scene.in", "160", "120"};
+        std::vector<std::string> arguments = {RAYTRACER_EXECUTABLE, "scene.in", width, height};
         arguments.insert(arguments.end(), options.begin(), options.end());
         ProcessOptions processOptions;
         processOptions.workingDirectory = folder_;
@@ -93,9 +95,15 @@ protected:
             return runProcess(arguments, processOptions);
         });
         const std::optional<unsigned long> window = findWindow("raytracer", 20.0);
-        ASSERT_TRUE(window) << "no window appeared";
+        if (!window && running())
+            FAIL() << "no window appeared within 20 s, and the program is still running";
+        if (!window) {
+            const ProcessResult ended = program_.get();
+            FAIL() << "no window appeared: the program " << ended.describeEnd() << "\n"
+                   << ended.standardOutput << ended.standardError;
+        }
         window_ = *window;
-        if (hidePanel)
+        if (showPanel)
             pressKey(window_, "Tab");
     }
 
@@ -113,6 +121,47 @@ protected:
         return waitForTitle(
             window_,
             [&part](const std::string& title) { return title.find(part) != std::string::npos; },
+            seconds);
+    }
+
+    // Waits for the title to show that the view changed since it showed `before`: `moving`
+    // (a preview while the view changes) or fewer samples than then (the accumulation
+    // restarted). Returns that title, or the last title read after `seconds`. A title read
+    // the moment after the input may still be one from before it, so the test waits for the
+    // change instead of reading the title once.
+    std::string waitForRestartAfter(const std::string& before, double seconds = 10.0)
+    {
+        const int samplesBefore = samplesInTitle(before);
+        return waitForTitle(
+            window_,
+            [samplesBefore](const std::string& title) {
+                return title.find("moving") != std::string::npos ||
+                       (samplesInTitle(title) >= 0 && samplesInTitle(title) < samplesBefore);
+            },
+            seconds);
+    }
+
+    static bool showsRestart(const std::string& before, const std::string& after)
+    {
+        return after.find("moving") != std::string::npos ||
+               (samplesInTitle(after) >= 0 && samplesInTitle(after) < samplesInTitle(before));
+    }
+
+    // Watches the title for `seconds`: returns the first title whose sample count fell
+    // below the one before it (the accumulation restarted) or that says the scene was
+    // reloaded, or else the last title read.
+    std::string firstRestartWithin(double seconds)
+    {
+        int previous = samplesInTitle(windowTitle(window_));
+        return waitForTitle(
+            window_,
+            [&previous](const std::string& title) {
+                const int samples = samplesInTitle(title);
+                const bool restarted =
+                    samples < previous || title.find("reloaded") != std::string::npos;
+                previous = samples;
+                return restarted;
+            },
             seconds);
     }
 
@@ -141,17 +190,27 @@ TEST_F(InteractiveWindow, DraggingTheMouseRestartsTheAccumulation)
     const std::string before = waitForSamples(60);
     ASSERT_GE(samplesInTitle(before), 60) << "the render did not get going: " << before;
     drag(window_, 1, 80, 60, 40, 10);
-    // The first title after the view stopped moving.
-    const std::string after = waitForTitle(
-        window_,
-        [](const std::string& title) {
-            return title.find("moving") == std::string::npos && samplesInTitle(title) >= 0;
-        },
-        10.0);
-    EXPECT_LT(samplesInTitle(after), samplesInTitle(before))
-        << "a left drag orbits the camera, so the accumulation must start again; before the "
-           "drag: \""
-        << before << "\", after: \"" << after << "\"";
+    const std::string after = waitForRestartAfter(before);
+    EXPECT_TRUE(showsRestart(before, after))
+        << "a left drag orbits the camera, so the window must show a moving view and the "
+           "accumulation start again; before the drag: \""
+        << before << "\", 10 s after: \"" << after << "\"";
+}
+
+// Nothing pressed first: the window as a user meets it, at the size the README measures.
+TEST_F(InteractiveWindow, ADragInAFreshWindowMovesTheCamera)
+{
+    writeScene(sceneText(kRed));
+    start({}, false, "320", "240");
+    const std::string before = waitForSamples(6);
+    ASSERT_GE(samplesInTitle(before), 6) << "the render did not get going: " << before;
+    drag(window_, 1, 150, 110, 60, 20);
+    const std::string after = waitForRestartAfter(before);
+    EXPECT_TRUE(showsRestart(before, after))
+        << "a left drag in the middle of a fresh 320x240 window must orbit the camera (a "
+           "moving view, then the accumulation restarted), not be taken by the statistics "
+           "panel; before the drag: \""
+        << before << "\", 10 s after: \"" << after << "\"";
 }
 
 TEST_F(InteractiveWindow, InputThatLeavesTheViewAloneKeepsTheAccumulation)
@@ -228,6 +287,29 @@ TEST_F(InteractiveWindow, EditingAColourChangesThePictureWithoutARecompile)
     const ChannelMeans blue = meanColour(captureWindow(window_));
     EXPECT_LT(blue.red, red.red - 0.02) << "the sphere turned from red to blue";
     EXPECT_GT(blue.blue, red.blue + 0.02) << "the sphere turned from red to blue";
+}
+
+TEST_F(InteractiveWindow, TouchingOrSavingTheSceneUnchangedKeepsTheAccumulation)
+{
+    writeScene(sceneText(kRed));
+    start();
+    ASSERT_GE(samplesInTitle(waitForSamples(8)), 8);
+    // Each change is left a second, four times the watcher's polling period.
+    fs::last_write_time(folder_ / "scene.in",
+                        fs::last_write_time(folder_ / "scene.in") + std::chrono::seconds(5));
+    std::string title = firstRestartWithin(1.0);
+    EXPECT_EQ(title.find("reloaded"), std::string::npos) << "touched: " << title;
+    EXPECT_GE(samplesInTitle(title), 8) << "touched: the accumulation restarted: " << title;
+    writeScene(sceneText(kRed));
+    title = firstRestartWithin(1.0);
+    EXPECT_EQ(title.find("reloaded"), std::string::npos) << "saved unchanged: " << title;
+    EXPECT_GE(samplesInTitle(title), 8) << "saved unchanged: the accumulation restarted: "
+                                        << title;
+    // Another file, the same scene: read, found to change nothing, and said so.
+    writeScene("# a comment\n" + sceneText(kRed));
+    const std::string commented = waitForTitleWith("changes nothing", 5.0);
+    EXPECT_NE(commented.find("changes nothing"), std::string::npos) << commented;
+    EXPECT_GE(samplesInTitle(commented), 8) << "a comment added: " << commented;
 }
 
 TEST_F(InteractiveWindow, ASyntaxErrorKeepsTheWindowAndShowsWhere)

@@ -1,0 +1,25 @@
+#include "render/ScenePreparation.h"
+
+#include "render/PathTracerProgram.h"
+#include "scene/FileLookup.h"
+#include "scene/InvisibleObjects.h"
+
+namespace render {
+
+PreparedScene prepareScene(const scene::Scene& scene, const ShaderBuild& build,
+                           const std::filesystem::path& shaderDirectory)
+{
+    PreparedScene prepared;
+    prepared.visible = scene::dropInvisibleObjects(scene);
+    prepared.code = generateSceneShaderCode(prepared.visible, build);
+    prepared.uniforms = packSceneUniforms(prepared.visible, prepared.code);
+    prepared.fragmentSource = assemblePathTracerSource(prepared.code, shaderDirectory);
+    return prepared;
+}
+
+std::filesystem::path defaultShaderDirectory()
+{
+    return scene::FileLookup::dataDirectory() / "shaders";
+}
+
+}  // namespace render

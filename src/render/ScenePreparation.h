@@ -1,0 +1,30 @@
+#pragma once
+// The one preparation stage between a parsed scene and the GPU: objects that do nothing to
+// light are dropped, the shader code is generated for what is left, its numbers are packed
+// and the fragment shader is assembled. Pure (it reads shader files, never GL state): the
+// renderer, `--features`, `--print-shader` and the benchmarks all prepare a scene here, so
+// they all see the same visible scene, features and source.
+#include "render/RenderSettings.h"
+#include "render/SceneShaderGenerator.h"
+#include "render/SceneUniforms.h"
+#include "render/ShaderSource.h"
+#include "scene/Scene.h"
+
+#include <filesystem>
+
+namespace render {
+
+struct PreparedScene {
+    scene::Scene visible;      // without its invisible objects (scene/InvisibleObjects.h)
+    SceneShaderCode code;      // code.features: what the shader is built for
+    SceneUniforms uniforms;    // every number the shader reads from the scene
+    ShaderSource fragmentSource;
+};
+
+PreparedScene prepareScene(const scene::Scene& scene, const ShaderBuild& build,
+                           const std::filesystem::path& shaderDirectory);
+
+// The project's shaders/ folder (FileLookup::dataDirectory()).
+std::filesystem::path defaultShaderDirectory();
+
+}  // namespace render

@@ -1,0 +1,115 @@
+#include "scene/PrimitiveKinds.h"
+
+#include <cctype>
+#include <tuple>
+#include <utility>
+
+namespace scene {
+
+namespace {
+
+template <typename P>
+using ParametersOf = decltype(Primitive<P>::parameters(std::declval<const P&>()));
+
+template <typename P>
+constexpr bool kUnionOfTerms = std::is_same_v<ParametersOf<P>, std::vector<glm::vec4>>;
+
+template <typename P>
+constexpr int parameterCount()
+{
+    if constexpr (kUnionOfTerms<P>)
+        return 1;
+    else
+        return static_cast<int>(std::tuple_size_v<ParametersOf<P>>);
+}
+
+template <typename P, std::size_t Code>
+PrimitiveKind describe()
+{
+    static_assert(std::is_same_v<std::variant_alternative_t<Code, Geometry>, P>,
+                  "a primitive's code is its index in Geometry");
+    using Description = Primitive<P>;
+    return {static_cast<int>(Code),
+            Description::keyword,
+            Description::distance,
+            parameterCount<P>(),
+            kUnionOfTerms<P>,
+            [](TokenCursor& in) -> Geometry { return Description::read(in); }};
+}
+
+template <typename... P, std::size_t... Code>
+std::vector<PrimitiveKind> describeAll(TypeList<P...>, std::index_sequence<Code...>)
+{
+    return {describe<P, Code>()...};
+}
+
+template <typename... P>
+std::vector<PrimitiveKind> describeAll(TypeList<P...> kinds)
+{
+    return describeAll(kinds, std::index_sequence_for<P...>{});
+}
+
+}  // namespace
+
+const std::vector<PrimitiveKind>& primitiveKinds()
+{
+    static const std::vector<PrimitiveKind> kinds = describeAll(PrimitiveTypes{});
+    return kinds;
+}
+
+const PrimitiveKind* findPrimitiveKind(const std::string& keyword)
+{
+    for (const PrimitiveKind& kind : primitiveKinds())
+        if (keyword == kind.keyword)
+            return &kind;
+    return nullptr;
+}
+
+const PrimitiveKind* primitiveKindOf(const Geometry& geometry)
+{
+    const std::size_t index = geometry.index();
+    return index < primitiveKinds().size() ? &primitiveKinds()[index] : nullptr;
+}
+
+std::string primitiveCodeName(const PrimitiveKind& kind)
+{
+    std::string name = "PRIMITIVE_";
+    for (const char* c = kind.keyword; *c != '\0'; ++c)
+        name += static_cast<char>(std::toupper(static_cast<unsigned char>(*c)));
+    return name;
+}
+
+int userSdfCode()
+{
+    return static_cast<int>(primitiveKinds().size());
+}
+
+std::vector<glm::vec4> primitiveParameters(const Geometry& geometry)
+{
+    return std::visit(
+        [](const auto& shape) -> std::vector<glm::vec4> {
+            using P = std::decay_t<decltype(shape)>;
+            if constexpr (kIsPrimitive<P>) {
+                const auto values = Primitive<P>::parameters(shape);
+                return {values.begin(), values.end()};
+            } else {
+                return {};
+            }
+        },
+        geometry);
+}
+
+ShapeBound primitiveBound(const Geometry& geometry)
+{
+    return std::visit(
+        [](const auto& shape) -> ShapeBound {
+            using P = std::decay_t<decltype(shape)>;
+            if constexpr (kIsPrimitive<P>)
+                return Primitive<P>::bound(shape);
+            else
+                return {};
+        },
+        geometry);
+}
+
+}  // namespace scene
