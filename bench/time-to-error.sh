@@ -15,8 +15,11 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 raytracer="$(readlink -f "${1:-$root/build/raytracer}")"
 peer="${PEER:-$root/../shared/peers/frag-pathtracer}"
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
+# The renders stay in TIME_TO_ERROR_DIR (default build-accuracy/time-to-error, which git
+# ignores), so that bench/time_to_error.py can be run on them again.
+work="${TIME_TO_ERROR_DIR:-$root/build-accuracy/time-to-error}"
+rm -rf "$work"
+mkdir -p "$work"
 cp "$peer"/source/scenes/* "$work/"
 results="$work/results.csv"
 echo "scene,program,spp,seconds,image" >"$results"
