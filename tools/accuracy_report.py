@@ -918,9 +918,12 @@ def write_report(args):
         "`docs/accuracy/` and this page. Its header documents every variable.\n")
     # The per-pixel sections (tools/per_pixel_report.py) are written by another tool; keep
     # them, before the convergence section.
+    # Their hand-written reading, when there is one, ends at its own marker.
     begin, end = "<!-- per-pixel:begin -->", "<!-- per-pixel:end -->"
     if os.path.exists(args.markdown):
         previous = open(args.markdown).read()
+        if "<!-- per-pixel-reading:end -->" in previous:
+            end = "<!-- per-pixel-reading:end -->"
         if begin in previous and end in previous:
             kept = previous[previous.index(begin):previous.index(end) + len(end)] + "\n"
             at = next((i for i, line in enumerate(out) if line.startswith("## Convergence")),
