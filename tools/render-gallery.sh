@@ -8,7 +8,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/tools/build.sh" >/dev/null
 # "NAME SPP" for each "### `scenes/NAME.in`" heading and the "N spp, ..." line under it.
 mapfile -t entries < <(awk '/^### `scenes\//{gsub(/### `scenes\//,""); gsub(/\.in`/,""); name=$0}
-                            /^[0-9]+ spp/{print name, $1}' "$root/docs/GALLERY.md")
+                            /^[0-9]+ spp/ && name != "" {print name, $1}' "$root/docs/GALLERY.md")
 for entry in "${entries[@]}"; do
     read -r name spp <<<"$entry"
     if [ $# -gt 0 ] && [[ ! " $* " == *" $name "* ]]; then

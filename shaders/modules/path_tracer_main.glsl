@@ -14,6 +14,10 @@ uniform sampler2D uPreviousEstimate;   // rgb: mean radiance, a: samples accumul
 uniform sampler2D uPreviousMoments;    // rgb: sum of squared deviations, a: samples discarded
 uniform int uSamplesPerFrame;
 uniform int uSampleTarget;  // samples (kept and discarded) a pixel stops at; 0: no limit
+// Adaptive sampling (render/AdaptiveSampling.h): r = the samples the pixels of each
+// uTileSize-pixel square tile stop at, tiles counted from the bottom left; uTileSize 0: none.
+uniform sampler2D uTileSampleTargets;
+uniform int uTileSize;
 
 layout(location = 0) out vec4 outEstimate;
 layout(location = 1) out vec4 outMoments;
@@ -41,6 +45,9 @@ void main()
     int traced = int(estimate.a + moments.a);
     int wanted = uSampleTarget > 0 ? min(uSamplesPerFrame, uSampleTarget - traced)
                                    : uSamplesPerFrame;
+    // A converged tile's pixels all return here together, so its lanes are free at once.
+    if (uTileSize > 0)
+        wanted = min(wanted, int(texelFetch(uTileSampleTargets, pixel / uTileSize, 0).r) - traced);
     if (wanted <= 0)
         return;
     int cameraContaining = cameraContainingObject();

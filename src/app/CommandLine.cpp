@@ -179,6 +179,19 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
             line.action = Action::PrintShader;
         } else if (argument == "--spp") {
             line.samplesPerPixel = positiveInteger(value(argument), "--spp", 1 << 24);
+        } else if (argument == "--target-error") {
+            const double error = positiveDecimal(value(argument), "--target-error");
+            if (error > 1.0)
+                throw UsageError("--target-error is a relative error, above 0 and at most 1 "
+                                 "(0.01 is 1 %)");
+            line.targetError = error;
+        } else if (argument == "--min-spp") {
+            line.adaptiveSampling.minimumSamples =
+                positiveInteger(value(argument), "--min-spp", 1 << 24);
+        } else if (argument == "--adaptive-tile") {
+            line.adaptiveSampling.tileSize = positiveInteger(value(argument), "--adaptive-tile", 256);
+        } else if (argument == "--uniform-sampling") {
+            line.uniformSampling = true;
         } else if (argument == "--output" || argument == "-o") {
             line.output = value(argument);
         } else if (argument == "--stats-output") {
@@ -275,8 +288,12 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
     if (positional.size() > 4)
         throw UsageError("unexpected argument '" + positional[4] + "' (see --help)");
     if (line.resume && line.action == Action::Render && !line.isBatch())
-        throw UsageError("--resume goes on to an end: give --spp N (samples per pixel in all) "
-                         "or SECONDS (more)");
+        throw UsageError("--resume goes on to an end: give --spp N (samples per pixel in all), "
+                         "--target-error E or SECONDS (more)");
+    if (line.targetError)
+        line.adaptiveSampling.targetError = *line.targetError;
+    if (line.samplesPerPixel)
+        line.adaptiveSampling.sampleLimit = *line.samplesPerPixel;
     return line;
 }
 
@@ -324,7 +341,19 @@ moments, so that renders can be merged and resumed (docs/SCALE_OUT.md):
   info                  prints what a file says of itself
 
 output:
-  --spp N               stop after exactly N samples per pixel (deterministic for a seed)
+  --spp N               stop after exactly N samples per pixel (deterministic for a seed);
+                        with --target-error, the most a pixel may take
+  --target-error E      stop once the estimated error is E: the relative RMS error, as a
+                        rel RMSE against the converged image (0.01 is 1 %), estimated from
+                        the per-pixel variance with its uncertainty (docs/ACCURACY.md). The
+                        samples go where the error is (adaptive sampling): a tile of pixels
+                        stops once it holds its share. With SECONDS or --spp, whichever comes
+                        first; the summary says which, and the error reached
+  --min-spp N           with --target-error, the samples every pixel takes before it may
+                        stop (default 32), so that a rare bright path is not missed
+  --adaptive-tile N     with --target-error, pixels along the side of a tile that stops as
+                        one (default 8; 1: every pixel alone)
+  --uniform-sampling    with --target-error, every pixel takes the same samples
 )"
            + outputFormatsHelp() + R"(
   --stats-output FILE   also write per-pixel statistics (.exr or .pfm): samples, discarded

@@ -1,4 +1,5 @@
 #pragma once
+#include "render/AdaptiveSampling.h"
 #include "render/RenderSettings.h"
 
 #include <filesystem>
@@ -26,6 +27,11 @@ struct CommandLine {
     int height = 480;
     std::optional<double> seconds;   // timed render
     std::optional<int> samplesPerPixel;
+    // --target-error E: stop once the estimated relative RMSE is E (render/AdaptiveSampling.h
+    // holds it with --min-spp and --adaptive-tile); --uniform-sampling: every pixel alike.
+    std::optional<double> targetError;
+    render::AdaptiveSampling adaptiveSampling;
+    bool uniformSampling = false;
     std::optional<std::filesystem::path> output;
     std::optional<std::filesystem::path> statisticsOutput;
     bool headless = false;
@@ -43,7 +49,10 @@ struct CommandLine {
     MergeRequest merge;              // raytracer merge ...
 
     // A render that ends by itself and writes a file (as opposed to a window kept open).
-    bool isBatch() const { return seconds.has_value() || samplesPerPixel.has_value(); }
+    bool isBatch() const
+    {
+        return seconds.has_value() || samplesPerPixel.has_value() || targetError.has_value();
+    }
     // Where the picture goes: --output, else the file resumed, else <scene name>.ppm in the
     // current folder.
     std::filesystem::path outputPath() const;

@@ -1,5 +1,6 @@
 #pragma once
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace app {
@@ -18,6 +19,15 @@ public:
     // spacing or more after the last point kept (5% early is still on time: the caller's
     // clock is a frame loop's, not a metronome).
     void add(double seconds, float relativeError);
+
+    // Seconds from `nowSeconds` until the error, `errorNow` at present, falls to `target`
+    // (0 when it is there), from the trend of the points kept in the latter half of the time
+    // so far: error ~ seconds^-a, a fitted by least squares on log-log axes. Uniform sampling
+    // gives a = 1/2 (the error falls as 1 / sqrt(samples)); adaptive sampling a steeper one
+    // as the image's easy parts stop. Until three such points span 1.4x in time, a = 1/2.
+    // Nothing when the error is not positive or nowSeconds is 0.
+    std::optional<double> secondsLeftToReach(double target, double nowSeconds,
+                                             double errorNow) const;
 
     const std::vector<float>& errors() const { return errors_; }
     double spacingSeconds() const { return spacing_; }

@@ -4,11 +4,11 @@
 
 namespace app {
 
-int samplesPerFrameFor(double targetFrameSeconds, double secondsPerSample)
+int samplesPerFrameFor(double targetFrameSeconds, double secondsPerSample, int most)
 {
     if (!(secondsPerSample > 0.0))
-        return 16;  // too fast to measure
-    const double samples = std::min(targetFrameSeconds / secondsPerSample, 16.0);
+        return most;  // too fast to measure
+    const double samples = std::min(targetFrameSeconds / secondsPerSample, static_cast<double>(most));
     return std::max(1, static_cast<int>(samples));
 }
 

@@ -3,10 +3,11 @@
 namespace app {
 
 // Paths per pixel in the next frame so that it takes about `targetFrameSeconds`, from what
-// one path per pixel took in the last frame: at least 1 and at most 16. Several paths per
+// one path per pixel took in the last frame: at least 1 and at most `most`. Several paths per
 // frame keep SIMD lanes busy (a pixel whose path ends starts the next at once) and the
-// per-draw overhead small; a window still wants frequent frames.
-int samplesPerFrameFor(double targetFrameSeconds, double secondsPerSample);
+// per-draw overhead small; a window still wants frequent frames. Adaptive sampling asks for
+// more: where only a few pixels still sample, a frame of 16 would be mostly overhead.
+int samplesPerFrameFor(double targetFrameSeconds, double secondsPerSample, int most = 16);
 
 // While the view changes the window shows one cheap sample per frame on a coarse grid
 // (ProgressiveRenderer::renderPreview). The grid's divisor follows the time the last such

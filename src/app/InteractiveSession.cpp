@@ -164,8 +164,10 @@ bool InteractiveSession::run()
         if (!renderer_.showsPreview() && renderer_.samplesPerPixel() >= 2 &&
             secondsBetween(lastEstimate, Clock::now()) >= kEstimateIntervalSeconds) {
             lastEstimate = Clock::now();
-            relativeError =
-                render::relativeRmsError(renderer_.radiance(), renderer_.sampleStatistics());
+            const auto estimate = render::estimateRelativeError(renderer_.accumulation());
+            relativeError.reset();
+            if (estimate)
+                relativeError = estimate->relativeError;
             if (relativeError)
                 history_.add(secondsBetween(accumulationStart_, lastEstimate),
                              static_cast<float>(*relativeError));

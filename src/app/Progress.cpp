@@ -40,22 +40,30 @@ int terminalColumns()
 // some terminals wrap); the short form where the width is unknown. Nothing is wider than the
 // terminal, so each redraw overwrites the last instead of leaving a trail of cut lines.
 std::string progressLine(int samples, double rate, double elapsed, double remaining,
-                         int columns)
+                         const std::string& aim, int columns)
 {
-    char forms[4][160];
+    char forms[4][240];
     const bool ends = remaining >= 0.0;
-    if (ends)
+    if (!aim.empty()) {
+        std::snprintf(forms[0], sizeof forms[0], "%6d spp  %7.2f spp/s  %7.1f s elapsed  %s",
+                      samples, rate, elapsed, aim.c_str());
+        std::snprintf(forms[1], sizeof forms[1], "%d spp  %.0f s  %s", samples, elapsed,
+                      aim.c_str());
+        std::snprintf(forms[2], sizeof forms[2], "%s", aim.c_str());
+    } else if (ends)
         std::snprintf(forms[0], sizeof forms[0],
                       "%6d spp  %7.2f spp/s  %7.1f s elapsed  %7.1f s left", samples, rate,
                       elapsed, remaining);
     else
         std::snprintf(forms[0], sizeof forms[0], "%6d spp  %7.2f spp/s  %7.1f s elapsed",
                       samples, rate, elapsed);
-    std::snprintf(forms[1], sizeof forms[1], ends ? "%d spp  %.2f spp/s  %.0f s left"
-                                                  : "%d spp  %.2f spp/s  %.0f s",
-                  samples, rate, ends ? remaining : elapsed);
-    std::snprintf(forms[2], sizeof forms[2], ends ? "%d spp, %.0f s left" : "%d spp, %.0f s",
-                  samples, ends ? remaining : elapsed);
+    if (aim.empty()) {
+        std::snprintf(forms[1], sizeof forms[1], ends ? "%d spp  %.2f spp/s  %.0f s left"
+                                                      : "%d spp  %.2f spp/s  %.0f s",
+                      samples, rate, ends ? remaining : elapsed);
+        std::snprintf(forms[2], sizeof forms[2], ends ? "%d spp, %.0f s left" : "%d spp, %.0f s",
+                      samples, ends ? remaining : elapsed);
+    }
     std::snprintf(forms[3], sizeof forms[3], "%d spp", samples);
     if (columns <= 0)
         return forms[2];
@@ -68,7 +76,7 @@ std::string progressLine(int samples, double rate, double elapsed, double remain
 
 }  // namespace
 
-void Progress::update(int samples)
+void Progress::update(int samples, const std::string& aim)
 {
     if (!enabled_)
         return;
@@ -82,7 +90,7 @@ void Progress::update(int samples)
         remaining = remaining < 0.0 ? bySamples : std::min(remaining, bySamples);
     }
     // Asked every time: the terminal may have been resized.
-    const std::string line = progressLine(samples, rate, elapsed, remaining, terminalColumns());
+    const std::string line = progressLine(samples, rate, elapsed, remaining, aim, terminalColumns());
     std::fputs(("\r" + line + "\033[K").c_str(), stderr);
     std::fflush(stderr);
     drawn_ = true;
@@ -110,6 +118,21 @@ std::string Progress::summary(int width, int height, int samples, double seconds
     std::snprintf(line, sizeof line,
                   "%dx%d, %d spp%s in %.2f s: %.3f Mpaths/s, %llu samples discarded", width,
                   height, samples, resumed, seconds, megapathsPerSecond, discarded);
+    return line;
+}
+
+std::string Progress::adaptiveSummary(int width, int height, render::SampleCountSpan span,
+                                      double samplesInAll, double seconds,
+                                      unsigned long long discarded)
+{
+    const double pixels = std::max(1.0, static_cast<double>(width) * height);
+    const double megapathsPerSecond = seconds > 0.0 ? samplesInAll / seconds / 1e6 : 0.0;
+    char line[240];
+    std::snprintf(line, sizeof line,
+                  "%dx%d, %.1f spp on average (%d-%d) in %.2f s: %.3f Mpaths/s, %llu samples "
+                  "discarded",
+                  width, height, samplesInAll / pixels, span.fewest, span.most, seconds,
+                  megapathsPerSecond, discarded);
     return line;
 }
 

@@ -1,4 +1,6 @@
 #pragma once
+#include "render/Accumulation.h"
+
 #include <chrono>
 #include <optional>
 #include <string>
@@ -13,8 +15,9 @@ public:
     Progress(int width, int height, std::optional<double> seconds,
              std::optional<int> samplesPerPixel, bool enabled, int samplesAtStart = 0);
 
-    // After each frame.
-    void update(int samplesPerPixel);
+    // After each frame; `aim` (a render to a target error's estimate and prediction) takes
+    // the place of the time left.
+    void update(int samplesPerPixel, const std::string& aim = {});
     // Clears the live line.
     void finish();
     double elapsedSeconds() const;
@@ -23,6 +26,11 @@ public:
     // "1280x720, 64 spp (16 resumed, 48 new) in 12.41 s: ..." with the rate of the new ones.
     static std::string summary(int width, int height, int samplesPerPixel, double seconds,
                                unsigned long long discarded, int samplesResumed = 0);
+    // Where pixels hold different counts (adaptive sampling): "160x120, 87.4 spp on average
+    // (32-1024) in 5.02 s: 0.334 Mpaths/s, 0 samples discarded".
+    static std::string adaptiveSummary(int width, int height, render::SampleCountSpan span,
+                                       double samplesInAll, double seconds,
+                                       unsigned long long discarded);
 
 private:
     int width_;

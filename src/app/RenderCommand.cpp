@@ -1,6 +1,7 @@
 #include "app/RenderCommand.h"
 
 #include "app/BuildInfo.h"
+#include "app/ErrorTargetRun.h"
 #include "app/FramePacing.h"
 #include "app/InteractiveSession.h"
 #include "app/Interrupt.h"
@@ -99,6 +100,20 @@ std::string interruptionNote(const CommandLine& line, int samples, double second
     return text;
 }
 
+// Where adaptive sampling has left a few pixels sampling, a frame adds up to this many
+// samples to each (below the shader's loop budget for most paths, constants.glsl).
+constexpr int kMostAdaptiveSamplesPerFrame = 1024;
+
+// What ended a render aimed at an error before it got there.
+std::string targetStop(const CommandLine& line, const ErrorTargetRun& run, bool interrupted)
+{
+    if (interrupted)
+        return "interrupted before it";
+    if (run.limitReached() || (line.samplesPerPixel && !run.adaptive()))
+        return "stopped at --spp " + std::to_string(*line.samplesPerPixel) + " before it";
+    return "stopped at the time limit before it";
+}
+
 }  // namespace
 
 int runRender(const CommandLine& commandLine)
@@ -142,6 +157,9 @@ int runRender(const CommandLine& commandLine)
     // The window's panel switches the environment off without a recompile.
     settings.switchableEnvironment = context->hasWindow();
     render::ProgressiveRenderer renderer(scene, line.width, line.height, settings);
+    std::optional<ErrorTargetRun> errorTarget;
+    if (line.targetError)
+        errorTarget.emplace(line.adaptiveSampling, !line.uniformSampling);
     int samplesResumed = 0;
     int fewestResumed = 0;
     if (resumed) {
@@ -169,25 +187,41 @@ int runRender(const CommandLine& commandLine)
             return !interrupt.requested() &&
                    (!line.seconds || secondsSince(renderStart) < *line.seconds);
         };
+        if (errorTarget)
+            errorTarget->start(renderer);
         // Unless told, the samples per frame follow the measured cost (the first frame,
         // which includes code generation, is not a measure).
         int samplesPerFrame = line.settings.samplesPerFrame;
         while (keepGoing()) {
-            if (line.samplesPerPixel && renderer.samplesPerPixel() >= *line.samplesPerPixel)
+            if (errorTarget && (errorTarget->reached() || errorTarget->limitReached()))
+                break;
+            // Adaptive sampling limits each pixel to --spp itself (render/AdaptiveSampling.h).
+            const bool countsUniformSamples = !errorTarget || !errorTarget->adaptive();
+            if (countsUniformSamples && line.samplesPerPixel &&
+                renderer.samplesPerPixel() >= *line.samplesPerPixel)
                 break;
             int samples = samplesPerFrame;
-            if (line.samplesPerPixel)
+            if (countsUniformSamples && line.samplesPerPixel)
                 samples = std::min(samples, *line.samplesPerPixel - renderer.samplesPerPixel());
             if (!renderer.renderFrame(keepGoing, samples))
                 break;
-            progress.update(renderer.samplesPerPixel());
+            if (errorTarget) {
+                errorTarget->afterFrame(renderer, secondsSince(renderStart));
+                progress.update(renderer.samplesPerPixel(), errorTarget->progressText());
+            } else {
+                progress.update(renderer.samplesPerPixel());
+            }
             if (!line.samplesPerFrameGiven && renderer.frames() > 1)
-                samplesPerFrame = samplesPerFrameFor(0.5, renderer.lastSecondsPerSample());
+                samplesPerFrame = samplesPerFrameFor(0.5, renderer.lastSecondsPerSample(),
+                                                     renderer.samplesAdaptively()
+                                                         ? kMostAdaptiveSamplesPerFrame
+                                                         : 16);
         }
         // Exactly --spp samples in every pixel, also where a frame's loop budget left one
         // short (ProgressiveRenderer::renderFrame), or an interrupted render resumed did.
         if (line.samplesPerPixel && renderer.samplesPerPixel() >= *line.samplesPerPixel &&
-            !interrupt.requested())
+            !interrupt.requested() && !renderer.samplesAdaptively() &&
+            !(errorTarget && errorTarget->reached()))
             renderer.completeSamples();
         renderSeconds = secondsSince(renderStart);
         progress.finish();
@@ -196,9 +230,14 @@ int runRender(const CommandLine& commandLine)
     // window is interrupted; a window without an end is meant to be closed.
     const bool interrupted = interrupt.requested() || endedEarly;
     const render::Accumulation accumulation = renderer.accumulation();
-    std::string summary = Progress::summary(renderer.width(), renderer.height(),
-                                            renderer.samplesPerPixel(), renderSeconds,
-                                            renderer.discardedSamples(), samplesResumed);
+    std::string summary =
+        renderer.samplesAdaptively()
+            ? Progress::adaptiveSummary(renderer.width(), renderer.height(),
+                                        render::samplesTakenSpan(accumulation),
+                                        render::samplesTakenInAll(accumulation), renderSeconds,
+                                        renderer.discardedSamples())
+            : Progress::summary(renderer.width(), renderer.height(), renderer.samplesPerPixel(),
+                                renderSeconds, renderer.discardedSamples(), samplesResumed);
     char setup[64];
     std::snprintf(setup, sizeof setup, " (setup %.2f s)", setupSeconds);
     summary += setup;
@@ -266,6 +305,8 @@ int runRender(const CommandLine& commandLine)
 
     if (interrupted)
         summary += " (interrupted)";
+    if (errorTarget)
+        summary += "; " + errorTarget->summaryText(targetStop(line, *errorTarget, interrupted));
     std::cout << summary << std::endl;
     return interrupted ? kExitInterrupted : kExitSuccess;
 }

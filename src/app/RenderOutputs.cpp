@@ -19,8 +19,13 @@ render::RenderMetadata describeRender(const std::filesystem::path& sceneFile,
     metadata.sceneSha256 = sceneSha256;
     metadata.camera = renderer.camera();
     metadata.settings = renderer.settings();
-    metadata.samplesPerPixel = renderer.samplesPerPixel();
-    metadata.sampleRanges = {{renderer.settings().seed, 0, renderer.samplesPerPixel()}};
+    // The most any pixel holds: with adaptive sampling the counts differ, and each pixel's
+    // samples are indices 0 to its count.
+    const int most = renderer.samplesAdaptively()
+                         ? render::samplesTakenSpan(renderer.accumulation()).most
+                         : renderer.samplesPerPixel();
+    metadata.samplesPerPixel = most;
+    metadata.sampleRanges = {{renderer.settings().seed, 0, most}};
     metadata.program = programName();
     metadata.gitCommit = gitCommit();
     return metadata;

@@ -1,34 +1,76 @@
 #include "render/ConvergenceEstimate.h"
 
 #include <cmath>
+#include <vector>
 
 namespace render {
 
-std::optional<double> relativeRmsError(const io::Image& radiance, const io::Image& statistics)
+namespace {
+
+// The variance of the pixel's mean, channel-averaged; negative where it is not known.
+double varianceOfMean(const Accumulation& accumulation, int x, int y)
 {
-    if (radiance.width != statistics.width || radiance.height != statistics.height ||
-        radiance.channels < 3 || statistics.channels < 3 || radiance.width == 0 ||
-        radiance.height == 0)
+    const double kept = accumulation.samplesKept(x, y);
+    if (!(kept >= 2.0))
+        return -1.0;
+    const io::Image& moments = accumulation.moments;
+    const double sumSquares =
+        (static_cast<double>(moments.at(x, y, 0)) + moments.at(x, y, 1) + moments.at(x, y, 2)) /
+        3.0;
+    return sumSquares / (kept * (kept - 1.0));
+}
+
+}  // namespace
+
+std::optional<ErrorEstimate> estimateRelativeError(const Accumulation& accumulation)
+{
+    const int width = accumulation.width();
+    const int height = accumulation.height();
+    if (width <= 0 || height <= 0)
         return std::nullopt;
     double varianceSum = 0.0;
     double radianceSum = 0.0;
+    double neighbourDifferenceSquares = 0.0;
     long pixels = 0;
-    for (int y = 0; y < radiance.height; ++y)
-        for (int x = 0; x < radiance.width; ++x) {
-            if (!(statistics.at(x, y, 0) >= 2.0f))
+    long neighbourPairs = 0;
+    std::vector<double> row(static_cast<std::size_t>(width));
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const double variance = varianceOfMean(accumulation, x, y);
+            row[x] = variance;
+            if (variance < 0.0)
                 continue;
-            // The statistics hold the channel average already: the mean over channels.
-            varianceSum += statistics.at(x, y, 2);
-            radianceSum +=
-                (radiance.at(x, y, 0) + radiance.at(x, y, 1) + radiance.at(x, y, 2)) / 3.0;
+            varianceSum += variance;
+            radianceSum += (static_cast<double>(accumulation.estimate.at(x, y, 0)) +
+                            accumulation.estimate.at(x, y, 1) + accumulation.estimate.at(x, y, 2)) /
+                           3.0;
             ++pixels;
+            if (x > 0 && row[x - 1] >= 0.0) {
+                const double difference = variance - row[x - 1];
+                neighbourDifferenceSquares += difference * difference;
+                ++neighbourPairs;
+            }
         }
     if (pixels == 0)
         return std::nullopt;
-    const double meanRadiance = radianceSum / static_cast<double>(pixels);
-    if (!(meanRadiance > 0.0))
-        return std::nullopt;
-    return std::sqrt(varianceSum / static_cast<double>(pixels)) / meanRadiance;
+    ErrorEstimate estimate;
+    estimate.meanRadiance = radianceSum / static_cast<double>(pixels);
+    const double meanVariance = varianceSum / static_cast<double>(pixels);
+    if (!(estimate.meanRadiance > 0.0))
+        return estimate;  // black everywhere: samples are never negative, so no noise either
+    estimate.relativeError = std::sqrt(meanVariance) / estimate.meanRadiance;
+    if (meanVariance > 0.0) {
+        const double perPixelVariance =
+            neighbourPairs > 0 ? 0.5 * neighbourDifferenceSquares / neighbourPairs
+                               : meanVariance * meanVariance;
+        const double varianceRelativeError =
+            std::sqrt(perPixelVariance / static_cast<double>(pixels)) / meanVariance;
+        const double meanRelativeError =
+            estimate.relativeError / std::sqrt(static_cast<double>(pixels));
+        estimate.uncertainty =
+            estimate.relativeError * std::hypot(0.5 * varianceRelativeError, meanRelativeError);
+    }
+    return estimate;
 }
 
 }  // namespace render

@@ -12,6 +12,8 @@ namespace render {
 
 namespace {
 
+constexpr int kTileSampleTargetsUnit = 4;
+
 double secondsSince(std::chrono::steady_clock::time_point start)
 {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -57,7 +59,8 @@ ProgressiveRenderer::ProgressiveRenderer(PreparedScene prepared, int width, int 
                                                     defaultShaderDirectory()))),
       pigmentTextures_(loadPigmentTextures(uniforms_.textureLayers)),
       targets_(width, height),
-      toneMapper_(defaultShaderDirectory())
+      toneMapper_(defaultShaderDirectory()),
+      tileSampleTargets_(gl::createTexture2D(GL_R32F, 1, 1, GL_RED, GL_FLOAT, nullptr))
 {
     // The first band is small: its cost is not known yet (and it pays for the driver's code
     // generation), so a large image's first frame in one band could not be stopped for
@@ -76,6 +79,7 @@ void ProgressiveRenderer::generateDriverCode()
     program_->program().use();
     glUniform1i(program_->program().uniformLocation("uSamplesPerFrame"), 0);
     glUniform1i(program_->program().uniformLocation("uSampleTarget"), 0);
+    glUniform1i(program_->program().uniformLocation("uTileSize"), 0);
     targets_.previous().estimate.bind(0);
     targets_.previous().moments.bind(1);
     pigmentTextures_.texture.bind(3);
@@ -98,6 +102,7 @@ void ProgressiveRenderer::uploadAll()
     glUniform1i(program.uniformLocation("uPreviousEstimate"), 0);
     glUniform1i(program.uniformLocation("uPreviousMoments"), 1);
     glUniform1i(program.uniformLocation("uPigmentTextures"), 3);
+    glUniform1i(program.uniformLocation("uTileSampleTargets"), kTileSampleTargetsUnit);
     glUniform1f(program.uniformLocation("uPigmentTextureSize"),
                 static_cast<float>(pigmentTextures_.size));
     gl::throwOnGlError("uploading the scene");
@@ -166,6 +171,7 @@ void ProgressiveRenderer::resize(int width, int height)
     frames_ = 0;
     samplesPerPixel_ = 0;
     previewDivisor_ = 0;
+    tileSize_ = 0;
     uploadAll();
 }
 
@@ -180,6 +186,7 @@ void ProgressiveRenderer::resumeFrom(const Accumulation& accumulation)
     frames_ = 0;
     samplesPerPixel_ = samplesTakenSpan(accumulation).most;
     previewDivisor_ = 0;
+    tileSize_ = 0;
 }
 
 void ProgressiveRenderer::restartAccumulation()
@@ -188,6 +195,7 @@ void ProgressiveRenderer::restartAccumulation()
     frames_ = 0;
     samplesPerPixel_ = 0;
     previewDivisor_ = 0;
+    tileSize_ = 0;
 }
 
 void ProgressiveRenderer::clearAccumulation()
@@ -203,6 +211,7 @@ void ProgressiveRenderer::clearAccumulation()
     frames_ = 0;
     samplesPerPixel_ = 0;
     previewDivisor_ = 0;
+    tileSize_ = 0;
 }
 
 void ProgressiveRenderer::renderPreview(int divisor, int maxBounces)
@@ -220,6 +229,7 @@ void ProgressiveRenderer::renderPreview(int divisor, int maxBounces)
     glUniform1i(program.uniformLocation("uMaxBounces"), std::min(maxBounces, settings_.maxBounces));
     glUniform1i(program.uniformLocation("uSamplesPerFrame"), 1);
     glUniform1i(program.uniformLocation("uSampleTarget"), 0);
+    glUniform1i(program.uniformLocation("uTileSize"), 0);
     const AccumulationTargets::Set& source = targets_.previous();
     source.estimate.bind(0);
     source.moments.bind(1);
@@ -250,6 +260,17 @@ bool ProgressiveRenderer::renderFrame(const std::function<bool()>& keepGoing, in
     ++frames_;
     samplesPerPixel_ += samples;
     return true;
+}
+
+void ProgressiveRenderer::setTileSampleTargets(const TileSampleTargets& targets)
+{
+    if (targets.tileSize < 1 || targets.columns * targets.tileSize < width() ||
+        targets.rows * targets.tileSize < height() ||
+        targets.samples.size() != static_cast<std::size_t>(targets.columns) * targets.rows)
+        throw std::invalid_argument("tile sample targets do not cover the image");
+    tileSampleTargets_ = gl::createTexture2D(GL_R32F, targets.columns, targets.rows, GL_RED,
+                                             GL_FLOAT, targets.samples.data());
+    tileSize_ = targets.tileSize;
 }
 
 void ProgressiveRenderer::completeSamples()
@@ -283,9 +304,11 @@ bool ProgressiveRenderer::drawFrame(const std::function<bool()>& keepGoing, int 
     program_->program().use();
     glUniform1i(program_->program().uniformLocation("uSamplesPerFrame"), 2 * samples);
     glUniform1i(program_->program().uniformLocation("uSampleTarget"), target);
+    glUniform1i(program_->program().uniformLocation("uTileSize"), tileSize_);
     source.estimate.bind(0);
     source.moments.bind(1);
     pigmentTextures_.texture.bind(3);
+    tileSampleTargets_.bind(kTileSampleTargetsUnit);
     destination.framebuffer.bindForDrawing();
     // The viewport stays the whole image so gl_FragCoord is the pixel; the scissor picks
     // the band.

@@ -3,6 +3,7 @@
 #include "io/Image.h"
 #include "render/Accumulation.h"
 #include "render/AccumulationTargets.h"
+#include "render/AdaptiveSampling.h"
 #include "render/PathTracerProgram.h"
 #include "render/ReloadDecision.h"
 #include "render/RenderSettings.h"
@@ -40,6 +41,15 @@ public:
     // two short, where the GPU's loop budget cut a path (shaders/modules/constants.glsl);
     // the next frame makes up for it, and completeSamples() evens every pixel out.
     bool renderFrame(const std::function<bool()>& keepGoing = {}, int samples = 0);
+
+    // Adaptive sampling: from the next frame on, each pixel takes samples only up to its
+    // tile's count in `targets` (render/AdaptiveSampling.h), and a tile whose pixels all hold
+    // theirs costs almost nothing. samplesPerPixel() then counts what the frames aimed at,
+    // the most a pixel may hold; accumulation() says what each holds. Lifted by
+    // clearTileSampleTargets and by anything that restarts the accumulation.
+    void setTileSampleTargets(const TileSampleTargets& targets);
+    void clearTileSampleTargets() { tileSize_ = 0; }
+    bool samplesAdaptively() const { return tileSize_ > 0; }
 
     // Renders until every pixel holds samplesPerPixel() samples exactly (kept or discarded).
     void completeSamples();
@@ -135,6 +145,8 @@ private:
     AccumulationTargets targets_;
     ToneMapper toneMapper_;
     gl::VertexArray triangle_;
+    gl::Texture tileSampleTargets_;
+    int tileSize_ = 0;  // 0: every pixel samples alike
     int frames_ = 0;
     int samplesPerPixel_ = 0;
     int rowsPerBand_ = 0;

@@ -178,5 +178,26 @@ TEST(ConvergenceHistory, WhenFullHalvesItsPointsAndDoublesItsSpacingToSpanEveryt
     EXPECT_EQ(history.errors().back(), -3.0f);
 }
 
+// Without a trend yet, the error is taken to fall as 1 / sqrt(time): from 4 % at 10 s, 1 %
+// takes 16 times the time, 150 s more.
+TEST(ConvergenceHistory, PredictsTheInverseSquareRootLawWithoutATrend)
+{
+    app::ConvergenceHistory history;
+    EXPECT_NEAR(*history.secondsLeftToReach(0.01, 10.0, 0.04), 150.0, 1e-9);
+    EXPECT_EQ(*history.secondsLeftToReach(0.01, 10.0, 0.005), 0.0);
+    EXPECT_FALSE(history.secondsLeftToReach(0.01, 0.0, 0.04));
+}
+
+// An error falling as 1 / time (adaptive sampling leaving the easy pixels) reaches a quarter
+// of itself in four times the time.
+TEST(ConvergenceHistory, PredictsFromTheTrendOfTheLatterHalf)
+{
+    app::ConvergenceHistory history;
+    history.add(1.0, 0.9f);  // early and off the trend: not in the latter half
+    for (double seconds = 5.0; seconds <= 10.0; seconds += 0.5)
+        history.add(seconds, static_cast<float>(0.4 / seconds));
+    EXPECT_NEAR(*history.secondsLeftToReach(0.01, 10.0, 0.04), 30.0, 0.1);
+}
+
 }  // namespace
 }  // namespace interaction_tests

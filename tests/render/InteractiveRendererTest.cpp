@@ -243,7 +243,7 @@ TEST(ConvergenceEstimate, PredictsTheDistanceBetweenTwoIndependentRenders)
     settings.seed = 12;
     const RenderedImage second = renderScene(scene, 64, 48, 32, settings);
     const std::optional<double> estimate =
-        render::relativeRmsError(first.radiance, first.statistics);
+        render::estimateRelativeError(first.accumulation)->relativeError;
     ASSERT_TRUE(estimate);
     const double measured = measuredRelativeError(first, second);
     EXPECT_NEAR(*estimate, measured, 0.15 * measured)
@@ -258,7 +258,7 @@ TEST(ConvergenceEstimate, BoundsTheErrorOfAStratifiedRender)
     const RenderedImage first = renderScene(scene, 64, 48, 32, settingsWithSeed(11));
     const RenderedImage second = renderScene(scene, 64, 48, 32, settingsWithSeed(12));
     const std::optional<double> estimate =
-        render::relativeRmsError(first.radiance, first.statistics);
+        render::estimateRelativeError(first.accumulation)->relativeError;
     ASSERT_TRUE(estimate);
     const double measured = measuredRelativeError(first, second);
     EXPECT_GE(*estimate, measured)

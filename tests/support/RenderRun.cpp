@@ -42,6 +42,7 @@ RenderedImage renderScene(const scene::Scene& scene, int width, int height, int 
     image.radiance = renderer.radiance();
     image.statistics = renderer.sampleStatistics();
     image.discardedSamples = renderer.discardedSamples();
+    image.accumulation = renderer.accumulation();
     return image;
 }
 

@@ -2,6 +2,7 @@
 // Rendering a scene in-process, in the GL context the test executable made (GlTestMain.cpp),
 // and reading back what the regression and physics tests compare.
 #include "io/Image.h"
+#include "render/Accumulation.h"
 #include "render/RenderSettings.h"
 #include "scene/Scene.h"
 
@@ -17,6 +18,7 @@ struct RenderedImage {
     io::Image radiance;    // linear RGB, top row first
     io::Image statistics;  // per pixel: samples, discarded samples, variance of the mean
     std::uint64_t discardedSamples = 0;
+    render::Accumulation accumulation;
 
     int width() const { return radiance.width; }
     int height() const { return radiance.height; }

@@ -1,0 +1,114 @@
+#include "app/ErrorTargetRun.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace app {
+
+namespace {
+
+// Planning aims this much below the error that stops the render: the stop needs the estimate
+// two standard deviations up under the target, and a plan met exactly would leave it a hair
+// above, to be crept up on one frame at a time.
+constexpr double kPlanningMargin = 0.97;
+
+}  // namespace
+
+ErrorTargetRun::ErrorTargetRun(const render::AdaptiveSampling& sampling, bool adaptive)
+    : sampling_(sampling), adaptive_(adaptive)
+{
+}
+
+void ErrorTargetRun::start(render::ProgressiveRenderer& renderer)
+{
+    if (adaptive_)
+        renderer.setTileSampleTargets(
+            render::planAdaptiveSampling(render::Accumulation(renderer.width(), renderer.height()),
+                                         sampling_)
+                .targets);
+}
+
+void ErrorTargetRun::afterFrame(render::ProgressiveRenderer& renderer, double elapsedSeconds)
+{
+    const render::Accumulation accumulation = renderer.accumulation();
+    estimate_ = render::estimateRelativeError(accumulation);
+    const render::SampleCountSpan span = render::samplesTakenSpan(accumulation);
+    const bool minimumHeld = span.fewest >= std::min(sampling_.minimumSamples,
+                                                     sampling_.sampleLimit > 0
+                                                         ? sampling_.sampleLimit
+                                                         : sampling_.minimumSamples);
+    reached_ = minimumHeld && estimate_ && estimate_->upperBound() <= sampling_.targetError;
+
+    if (estimate_ && !reached_) {
+        render::AdaptiveSampling aim = sampling_;
+        // What the estimate's uncertainty asks beyond the target, and the margin.
+        aim.targetError = kPlanningMargin * sampling_.targetError *
+                          estimate_->relativeError / std::max(estimate_->upperBound(), 1e-30);
+        if (adaptive_) {
+            render::AdaptivePlan plan = render::planAdaptiveSampling(accumulation, aim);
+            // Every tile holds its share but the estimate is not there: the noise grew as it
+            // was sampled (a bright path found late). Aim lower until a tile has work, or
+            // every pixel holds the limit.
+            for (int tries = 0; plan.activeTiles == 0 && tries < 40; ++tries) {
+                aim.targetError *= 0.9;
+                plan = render::planAdaptiveSampling(accumulation, aim);
+            }
+            limitReached_ = plan.activeTiles == 0;
+            renderer.setTileSampleTargets(plan.targets);
+        }
+    } else if (!estimate_ && adaptive_) {
+        renderer.setTileSampleTargets(render::planAdaptiveSampling(accumulation, sampling_).targets);
+    }
+
+    predictedSecondsLeft_.reset();
+    if (estimate_ && minimumHeld) {
+        history_.add(elapsedSeconds, static_cast<float>(estimate_->upperBound()));
+        predictedSecondsLeft_ = history_.secondsLeftToReach(sampling_.targetError, elapsedSeconds,
+                                                            estimate_->upperBound());
+    }
+    if (!firstPredictionAt_ && predictedSecondsLeft_) {
+        firstPredictionAt_ = elapsedSeconds;
+        firstPredictedTotal_ = elapsedSeconds + *predictedSecondsLeft_;
+    }
+}
+
+std::string ErrorTargetRun::progressText() const
+{
+    char text[120];
+    if (!estimate_) {
+        std::snprintf(text, sizeof text, "target %.3g %%", 100.0 * sampling_.targetError);
+        return text;
+    }
+    if (predictedSecondsLeft_)
+        std::snprintf(text, sizeof text, "error %.3g %% (target %.3g %%), about %.0f s left",
+                      100.0 * estimate_->relativeError, 100.0 * sampling_.targetError,
+                      *predictedSecondsLeft_);
+    else
+        std::snprintf(text, sizeof text, "error %.3g %% (target %.3g %%)",
+                      100.0 * estimate_->relativeError, 100.0 * sampling_.targetError);
+    return text;
+}
+
+std::string ErrorTargetRun::summaryText(const std::string& stop) const
+{
+    char text[240];
+    const char* sampling = adaptive_ ? "adaptive" : "uniform";
+    if (!estimate_) {
+        std::snprintf(text, sizeof text, "error not known yet (target %.3g %%, %s sampling: %s)",
+                      100.0 * sampling_.targetError, sampling, stop.c_str());
+        return text;
+    }
+    std::snprintf(text, sizeof text, "error %.3g %% +- %.2g %% (target %.3g %%, %s sampling: %s)",
+                  100.0 * estimate_->relativeError, 100.0 * estimate_->uncertainty,
+                  100.0 * sampling_.targetError, sampling,
+                  reached_ ? "reached" : stop.c_str());
+    std::string result = text;
+    if (firstPredictionAt_ && firstPredictedTotal_) {
+        std::snprintf(text, sizeof text, "; predicted at %.2f s: %.2f s in all",
+                      *firstPredictionAt_, *firstPredictedTotal_);
+        result += text;
+    }
+    return result;
+}
+
+}  // namespace app

@@ -1,0 +1,59 @@
+#pragma once
+#include "app/ConvergenceHistory.h"
+#include "render/AdaptiveSampling.h"
+#include "render/ConvergenceEstimate.h"
+#include "render/ProgressiveRenderer.h"
+
+#include <optional>
+#include <string>
+
+namespace app {
+
+// A render aimed at an error (--target-error): after every frame it estimates the error
+// reached (render/ConvergenceEstimate.h), sends the next samples where the error is
+// (render/AdaptiveSampling.h; unless sampling uniformly) and predicts the time still needed.
+class ErrorTargetRun {
+public:
+    ErrorTargetRun(const render::AdaptiveSampling& sampling, bool adaptive);
+
+    // Before the first frame: every pixel's first aim is the minimum.
+    void start(render::ProgressiveRenderer& renderer);
+    // After each frame, `elapsedSeconds` into the render.
+    void afterFrame(render::ProgressiveRenderer& renderer, double elapsedSeconds);
+
+    // Every pixel holds the minimum and the estimate, two standard deviations up, is at most
+    // the target.
+    bool reached() const { return reached_; }
+    // Adaptive sampling with a sample limit (--spp) has no pixel left to sample: every one
+    // holds the limit, or its tile's share.
+    bool limitReached() const { return limitReached_; }
+    const std::optional<render::ErrorEstimate>& estimate() const { return estimate_; }
+    // Seconds still needed, from the trend of the estimate so far (ConvergenceHistory);
+    // nothing before every pixel holds the minimum.
+    std::optional<double> predictedSecondsLeft() const { return predictedSecondsLeft_; }
+    // The first prediction, made as soon as every pixel held the minimum: when, and the
+    // whole render's time it foresaw.
+    std::optional<double> firstPredictionAt() const { return firstPredictionAt_; }
+    std::optional<double> firstPredictedTotal() const { return firstPredictedTotal_; }
+    bool adaptive() const { return adaptive_; }
+    const render::AdaptiveSampling& sampling() const { return sampling_; }
+
+    // "error 2.31 % (target 1 %), about 14 s left", for the progress line.
+    std::string progressText() const;
+    // "error 0.98 % +- 0.02 % (target 1 %: reached)", for the summary; `stop` says what
+    // ended the render otherwise ("stopped at the time limit").
+    std::string summaryText(const std::string& stop) const;
+
+private:
+    render::AdaptiveSampling sampling_;
+    bool adaptive_;
+    std::optional<render::ErrorEstimate> estimate_;
+    std::optional<double> predictedSecondsLeft_;
+    std::optional<double> firstPredictionAt_;
+    std::optional<double> firstPredictedTotal_;
+    ConvergenceHistory history_;
+    bool reached_ = false;
+    bool limitReached_ = false;
+};
+
+}  // namespace app

@@ -1,0 +1,93 @@
+#include "render/AdaptiveSampling.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace render {
+
+namespace {
+
+// The standard deviation of one sample, channel-averaged variance; 0 where fewer than two
+// samples were kept.
+double sampleDeviation(const Accumulation& accumulation, int x, int y)
+{
+    const double kept = accumulation.samplesKept(x, y);
+    if (!(kept >= 2.0))
+        return 0.0;
+    const io::Image& moments = accumulation.moments;
+    const double sumSquares =
+        (static_cast<double>(moments.at(x, y, 0)) + moments.at(x, y, 1) + moments.at(x, y, 2)) /
+        3.0;
+    return std::sqrt(std::max(0.0, sumSquares / (kept - 1.0)));
+}
+
+double channelMeanRadiance(const Accumulation& accumulation)
+{
+    double sum = 0.0;
+    for (int y = 0; y < accumulation.height(); ++y)
+        for (int x = 0; x < accumulation.width(); ++x)
+            sum += (static_cast<double>(accumulation.estimate.at(x, y, 0)) +
+                    accumulation.estimate.at(x, y, 1) + accumulation.estimate.at(x, y, 2)) /
+                   3.0;
+    return sum / std::max(1.0, static_cast<double>(accumulation.width()) * accumulation.height());
+}
+
+double limited(double samples, int limit)
+{
+    return limit > 0 ? std::min(samples, static_cast<double>(limit)) : samples;
+}
+
+}  // namespace
+
+AdaptivePlan planAdaptiveSampling(const Accumulation& accumulation,
+                                  const AdaptiveSampling& sampling)
+{
+    const int width = accumulation.width();
+    const int height = accumulation.height();
+    const int tileSize = std::max(1, sampling.tileSize);
+    AdaptivePlan plan;
+    TileSampleTargets& targets = plan.targets;
+    targets.tileSize = tileSize;
+    targets.columns = (width + tileSize - 1) / tileSize;
+    targets.rows = (height + tileSize - 1) / tileSize;
+    targets.samples.assign(static_cast<std::size_t>(targets.columns) * targets.rows,
+                           static_cast<float>(limited(sampling.minimumSamples, sampling.sampleLimit)));
+
+    double deviationSum = 0.0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            deviationSum += sampleDeviation(accumulation, x, y);
+    const double pixels = std::max(1.0, static_cast<double>(width) * height);
+    const double targetVariance = std::pow(sampling.targetError * channelMeanRadiance(accumulation), 2);
+    // n_p = s_p * mean(s) / targetVariance (AdaptiveSampling.h); a black image needs the
+    // minimum only.
+    const double samplesPerDeviation =
+        targetVariance > 0.0 ? deviationSum / pixels / targetVariance : 0.0;
+
+    // The image is stored top row first; tiles count from the bottom, as GL's rows do.
+    auto tileOf = [&](int x, int y) {
+        return static_cast<std::size_t>((height - 1 - y) / tileSize) * targets.columns +
+               x / tileSize;
+    };
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const double wanted =
+                limited(std::ceil(sampleDeviation(accumulation, x, y) * samplesPerDeviation),
+                        sampling.sampleLimit);
+            float& tile = targets.samples[tileOf(x, y)];
+            // Beyond what a float counts exactly, the count would not grow.
+            tile = std::max(tile, static_cast<float>(std::min(wanted, 16777216.0)));
+        }
+
+    std::vector<bool> active(targets.samples.size(), false);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const std::size_t tile = tileOf(x, y);
+            if (accumulation.samplesTaken(x, y) < targets.samples[tile])
+                active[tile] = true;
+        }
+    plan.activeTiles = static_cast<int>(std::count(active.begin(), active.end(), true));
+    return plan;
+}
+
+}  // namespace render

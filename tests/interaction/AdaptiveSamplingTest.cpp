@@ -1,0 +1,137 @@
+// render::planAdaptiveSampling: where the samples of a render aimed at an error go, on
+// accumulations whose noise is known.
+#include "render/AdaptiveSampling.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace interaction_tests {
+namespace {
+
+// Every pixel: `samples` samples kept of mean `radiance`, each sample's standard deviation
+// `deviation` (all channels).
+render::Accumulation noisyAccumulation(int width, int height, float radiance, float samples,
+                                       float deviation)
+{
+    render::Accumulation accumulation(width, height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                accumulation.estimate.at(x, y, c) = radiance;
+                accumulation.moments.at(x, y, c) = deviation * deviation * (samples - 1.0f);
+            }
+            accumulation.estimate.at(x, y, 3) = samples;
+        }
+    return accumulation;
+}
+
+void setDeviation(render::Accumulation& accumulation, int x, int y, float deviation)
+{
+    const float n = accumulation.samplesKept(x, y);
+    for (int c = 0; c < 3; ++c)
+        accumulation.moments.at(x, y, c) = deviation * deviation * (n - 1.0f);
+}
+
+float tileTarget(const render::AdaptivePlan& plan, int column, int row)
+{
+    return plan.targets.samples[static_cast<std::size_t>(row) * plan.targets.columns + column];
+}
+
+render::AdaptiveSampling aimingAt(double error, int minimum, int tileSize)
+{
+    render::AdaptiveSampling sampling;
+    sampling.targetError = error;
+    sampling.minimumSamples = minimum;
+    sampling.tileSize = tileSize;
+    return sampling;
+}
+
+TEST(AdaptiveSampling, NoPixelStopsBeforeTheMinimum)
+{
+    const render::AdaptivePlan plan =
+        render::planAdaptiveSampling(render::Accumulation(20, 12), aimingAt(0.01, 24, 8));
+    EXPECT_EQ(plan.targets.columns, 3);
+    EXPECT_EQ(plan.targets.rows, 2);
+    for (float target : plan.targets.samples)
+        EXPECT_EQ(target, 24.0f);
+    EXPECT_EQ(plan.activeTiles, 6);
+}
+
+TEST(AdaptiveSampling, APixelWithoutNoiseStopsAtTheMinimum)
+{
+    const render::AdaptivePlan plan = render::planAdaptiveSampling(
+        noisyAccumulation(8, 8, 1.0f, 40, 0.0f), aimingAt(0.01, 32, 8));
+    EXPECT_EQ(tileTarget(plan, 0, 0), 32.0f);
+    EXPECT_EQ(plan.activeTiles, 0);
+}
+
+// Samples in proportion to each pixel's standard deviation: the left half ten times as noisy
+// as the right gets ten times the samples.
+TEST(AdaptiveSampling, SendsSamplesWhereTheNoiseIs)
+{
+    render::Accumulation accumulation = noisyAccumulation(16, 8, 1.0f, 32, 0.1f);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x)
+            setDeviation(accumulation, x, y, 1.0f);
+    const render::AdaptivePlan plan =
+        render::planAdaptiveSampling(accumulation, aimingAt(0.01, 1, 8));
+    // n = s * mean(s) / (E mean)^2: 1 * 0.55 / 1e-4 = 5500 and 550.
+    EXPECT_NEAR(tileTarget(plan, 0, 0), 5500.0f, 1.0f);
+    EXPECT_NEAR(tileTarget(plan, 1, 0), 550.0f, 1.0f);
+}
+
+// Every pixel holding its tile's count brings the image's estimated error to the target.
+TEST(AdaptiveSampling, ThePlanMetReachesTheTarget)
+{
+    render::Accumulation accumulation = noisyAccumulation(24, 16, 2.0f, 16, 0.5f);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 24; ++x)
+            setDeviation(accumulation, x, y, 0.2f + 0.1f * ((x * 7 + y * 3) % 11));
+    constexpr double kTarget = 0.02;
+    for (int tileSize : {1, 4, 8}) {
+        const render::AdaptivePlan plan =
+            render::planAdaptiveSampling(accumulation, aimingAt(kTarget, 16, tileSize));
+        double varianceSum = 0.0;
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 24; ++x) {
+                const double deviation = 0.2 + 0.1 * ((x * 7 + y * 3) % 11);
+                const int row = (15 - y) / tileSize;  // tiles count from the bottom
+                const double samples = tileTarget(plan, x / tileSize, row);
+                varianceSum += deviation * deviation / samples;
+            }
+        const double error = std::sqrt(varianceSum / (24 * 16)) / 2.0;
+        EXPECT_LE(error, kTarget) << "tiles of " << tileSize;
+        // Pixel by pixel it is the cheapest way there, so it lands on the target.
+        if (tileSize == 1) {
+            EXPECT_GT(error, 0.98 * kTarget);
+        }
+    }
+}
+
+TEST(AdaptiveSampling, ATileTakesTheLargestCountOfItsPixelsAndTilesCountFromTheBottom)
+{
+    render::Accumulation accumulation = noisyAccumulation(8, 8, 1.0f, 16, 0.0f);
+    setDeviation(accumulation, 1, 1, 1.0f);  // near the top left: tile row 1 of tiles of 4
+    const render::AdaptivePlan plan =
+        render::planAdaptiveSampling(accumulation, aimingAt(0.01, 2, 4));
+    // 1 * (1 / 64) / 0.01^2
+    EXPECT_EQ(tileTarget(plan, 0, 1), 157.0f);
+    EXPECT_EQ(tileTarget(plan, 0, 0), 2.0f);
+    EXPECT_EQ(tileTarget(plan, 1, 0), 2.0f);
+    EXPECT_EQ(tileTarget(plan, 1, 1), 2.0f);
+    EXPECT_EQ(plan.activeTiles, 1);
+}
+
+TEST(AdaptiveSampling, NoTileGoesPastTheSampleLimit)
+{
+    render::AdaptiveSampling sampling = aimingAt(0.001, 16, 8);
+    sampling.sampleLimit = 64;
+    const render::AdaptivePlan plan =
+        render::planAdaptiveSampling(noisyAccumulation(8, 8, 1.0f, 64, 1.0f), sampling);
+    EXPECT_EQ(tileTarget(plan, 0, 0), 64.0f);
+    EXPECT_EQ(plan.activeTiles, 0);
+}
+
+}  // namespace
+}  // namespace interaction_tests
