@@ -916,19 +916,21 @@ def write_report(args):
         "`build-accuracy/accuracy-cache/` (reused while the scene, shaders and settings are "
         "unchanged; `ACCURACY_REFRESH=1` renders them again), writes the CSVs and plots to "
         "`docs/accuracy/` and this page. Its header documents every variable.\n")
-    # The per-pixel sections (tools/per_pixel_report.py) are written by another tool; keep
-    # them, before the convergence section.
-    # Their hand-written reading, when there is one, ends at its own marker.
-    begin, end = "<!-- per-pixel:begin -->", "<!-- per-pixel:end -->"
+    # The per-pixel sections (tools/per_pixel_report.py) and the target-error section
+    # (bench/target_error.py) are written by other tools; keep them, in their order, before
+    # the convergence section. The per-pixel sections' hand-written reading, when there is
+    # one, ends at its own marker.
     if os.path.exists(args.markdown):
         previous = open(args.markdown).read()
-        if "<!-- per-pixel-reading:end -->" in previous:
-            end = "<!-- per-pixel-reading:end -->"
-        if begin in previous and end in previous:
-            kept = previous[previous.index(begin):previous.index(end) + len(end)] + "\n"
-            at = next((i for i, line in enumerate(out) if line.startswith("## Convergence")),
-                      len(out))
-            out.insert(at, kept)
+        kept = []
+        for begin, end in (("<!-- per-pixel:begin -->", "<!-- per-pixel-reading:end -->"),
+                           ("<!-- per-pixel:begin -->", "<!-- per-pixel:end -->"),
+                           ("<!-- target-error:begin -->", "<!-- target-error:end -->")):
+            if begin in previous and end in previous and not any(begin in k for k in kept):
+                kept.append(previous[previous.index(begin):previous.index(end) + len(end)] + "\n")
+        at = next((i for i, line in enumerate(out) if line.startswith("## Convergence")),
+                  len(out))
+        out[at:at] = kept
     with open(args.markdown, "w") as file:
         file.write("\n".join(out))
 

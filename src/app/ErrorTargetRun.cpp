@@ -66,10 +66,6 @@ void ErrorTargetRun::afterFrame(render::ProgressiveRenderer& renderer, double el
         predictedSecondsLeft_ = history_.secondsLeftToReach(sampling_.targetError, elapsedSeconds,
                                                             estimate_->upperBound());
     }
-    if (!firstPredictionAt_ && predictedSecondsLeft_) {
-        firstPredictionAt_ = elapsedSeconds;
-        firstPredictedTotal_ = elapsedSeconds + *predictedSecondsLeft_;
-    }
 }
 
 std::string ErrorTargetRun::progressText() const
@@ -102,13 +98,7 @@ std::string ErrorTargetRun::summaryText(const std::string& stop) const
                   100.0 * estimate_->relativeError, 100.0 * estimate_->uncertainty,
                   100.0 * sampling_.targetError, sampling,
                   reached_ ? "reached" : stop.c_str());
-    std::string result = text;
-    if (firstPredictionAt_ && firstPredictedTotal_) {
-        std::snprintf(text, sizeof text, "; predicted at %.2f s: %.2f s in all",
-                      *firstPredictionAt_, *firstPredictedTotal_);
-        result += text;
-    }
-    return result;
+    return text;
 }
 
 }  // namespace app

@@ -31,17 +31,13 @@ public:
     // Seconds still needed, from the trend of the estimate so far (ConvergenceHistory);
     // nothing before every pixel holds the minimum.
     std::optional<double> predictedSecondsLeft() const { return predictedSecondsLeft_; }
-    // The first prediction, made as soon as every pixel held the minimum: when, and the
-    // whole render's time it foresaw.
-    std::optional<double> firstPredictionAt() const { return firstPredictionAt_; }
-    std::optional<double> firstPredictedTotal() const { return firstPredictedTotal_; }
     bool adaptive() const { return adaptive_; }
     const render::AdaptiveSampling& sampling() const { return sampling_; }
 
     // "error 2.31 % (target 1 %), about 14 s left", for the progress line.
     std::string progressText() const;
-    // "error 0.98 % +- 0.02 % (target 1 %: reached)", for the summary; `stop` says what
-    // ended the render otherwise ("stopped at the time limit").
+    // "error 0.98 % +- 0.02 % (target 1 %, adaptive sampling: reached)", for the summary;
+    // `stop` says what ended the render otherwise ("stopped at the time limit before it").
     std::string summaryText(const std::string& stop) const;
 
 private:
@@ -49,8 +45,6 @@ private:
     bool adaptive_;
     std::optional<render::ErrorEstimate> estimate_;
     std::optional<double> predictedSecondsLeft_;
-    std::optional<double> firstPredictionAt_;
-    std::optional<double> firstPredictedTotal_;
     ConvergenceHistory history_;
     bool reached_ = false;
     bool limitReached_ = false;

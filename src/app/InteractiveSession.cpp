@@ -81,6 +81,8 @@ bool InteractiveSession::reachedEnd(Clock::time_point start) const
 {
     if (line_.samplesPerPixel && renderer_.samplesPerPixel() >= *line_.samplesPerPixel)
         return true;
+    if (targetReached_)
+        return true;
     return line_.seconds && secondsBetween(start, Clock::now()) >= *line_.seconds;
 }
 
@@ -128,6 +130,7 @@ bool InteractiveSession::run()
             lastViewChange_ = now;
             restartClock();
             relativeError.reset();
+            secondsToTarget_.reset();
         }
 
         const bool dragging = input.isDown(platform::MouseButton::Left) ||
@@ -168,9 +171,18 @@ bool InteractiveSession::run()
             relativeError.reset();
             if (estimate)
                 relativeError = estimate->relativeError;
+            const double accumulated = secondsBetween(accumulationStart_, lastEstimate);
             if (relativeError)
-                history_.add(secondsBetween(accumulationStart_, lastEstimate),
-                             static_cast<float>(*relativeError));
+                history_.add(accumulated, static_cast<float>(*relativeError));
+            // A window given --target-error samples every pixel alike, and ends as a batch
+            // render to that target does (ErrorTargetRun).
+            if (estimate && line_.targetError) {
+                targetReached_ =
+                    estimate->upperBound() <= *line_.targetError &&
+                    renderer_.samplesPerPixel() >= line_.adaptiveSampling.minimumSamples;
+                secondsToTarget_ = history_.secondsLeftToReach(*line_.targetError, accumulated,
+                                                               estimate->upperBound());
+            }
         }
         settingsChanged = showFrame(relativeError);
         if (viewChanged) {
@@ -367,6 +379,8 @@ bool InteractiveSession::showFrame(const std::optional<double>& relativeError)
     readings.previewFramesPerSecond =
         previewFrameSeconds_ > 0.0 ? 1.0 / previewFrameSeconds_ : 0.0;
     readings.relativeError = relativeError;
+    readings.targetError = line_.targetError;
+    readings.secondsToTarget = secondsToTarget_;
     readings.history = &history_;
     readings.features = renderer_.features().describe();
     readings.status = status_;

@@ -73,6 +73,8 @@ private:
     StatisticsPanel panel_;
     PanelSettings panelSettings_;
     ConvergenceHistory history_;
+    bool targetReached_ = false;               // --target-error
+    std::optional<double> secondsToTarget_;    // predicted, from history_
     std::string status_;
     bool statusIsError_ = false;
     int previewDivisor_ = 2;

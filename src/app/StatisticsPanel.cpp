@@ -85,6 +85,13 @@ PanelSettings StatisticsPanel::draw(const PanelReadings& readings, const PanelSe
                         100.0 * *readings.relativeError);
         else
             ImGui::Text("remaining error: needs 2 samples per pixel");
+        if (readings.targetError && !readings.previewing) {
+            if (readings.secondsToTarget)
+                ImGui::Text("target %.2f%%: about %.0f s left", 100.0 * *readings.targetError,
+                            *readings.secondsToTarget);
+            else
+                ImGui::Text("target %.2f%%", 100.0 * *readings.targetError);
+        }
         if (readings.history != nullptr && !readings.history->errors().empty()) {
             const auto& errors = readings.history->errors();
             char caption[64];

@@ -20,6 +20,8 @@ struct PanelReadings {
     int previewDivisor = 1;
     double previewFramesPerSecond = 0.0;
     std::optional<double> relativeError;
+    std::optional<double> targetError;      // --target-error
+    std::optional<double> secondsToTarget;  // predicted
     const ConvergenceHistory* history = nullptr;
     std::string features;  // SceneFeatures::describe()
     std::string status;    // the last reload or save, or the error that stopped a reload

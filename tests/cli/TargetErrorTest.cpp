@@ -173,5 +173,24 @@ TEST_F(TargetError, ASampleLimitEndsAnAdaptiveRenderAndSaysSo)
     EXPECT_GE(span.fewest, 32) << "the minimum";
 }
 
+// Adaptive renders hold different counts per pixel: the file says each pixel's, and a merge
+// adds them pixel by pixel.
+TEST_F(TargetError, MergedAdaptiveRendersAddTheirPerPixelCounts)
+{
+    render({"48", "36", "60", "--target-error", "0.1", "--seed", "1", "--output", "a.exr"});
+    render({"48", "36", "60", "--target-error", "0.1", "--seed", "2", "--output", "b.exr"});
+    const ProcessResult merged = run({"merge", "all.exr", "a.exr", "b.exr"});
+    ASSERT_TRUE(merged.exited && merged.exitStatus == 0) << describe(merged);
+    const render::Accumulation a = accumulation("a.exr");
+    const render::Accumulation b = accumulation("b.exr");
+    const render::Accumulation all = accumulation("all.exr");
+    const render::SampleCountSpan span = render::samplesTakenSpan(a);
+    EXPECT_GT(span.most, 2 * span.fewest) << "the counts should differ from pixel to pixel";
+    for (int y = 0; y < all.height(); ++y)
+        for (int x = 0; x < all.width(); ++x)
+            EXPECT_EQ(all.samplesTaken(x, y), a.samplesTaken(x, y) + b.samplesTaken(x, y))
+                << "pixel " << x << ", " << y;
+}
+
 }  // namespace
 }  // namespace cli_tests
