@@ -23,14 +23,9 @@ uniform vec4 uLights[3 * LIGHT_ARRAY_SIZE];
 // and intersect the spheres exactly instead (ray_queries_traced.glsl).
 uniform uint uSphereLightPieces;
 
-const int PIGMENT_SOLID = 0;
-const int PIGMENT_CHECKER = 1;
-const int PIGMENT_TEXTURE = 2;
-
-const int MATERIAL_LAMBERTIAN = 0;
-const int MATERIAL_BLINN_PHONG = 1;
-const int MATERIAL_MIRROR = 2;
-const int MATERIAL_DIELECTRIC = 3;
+// The pigment and material codes (PIGMENT_*, MATERIAL_*) are generated #defines
+// (render/ShaderCodes.h), from the kinds' descriptions in scene/Pigments.h and
+// scene/Materials.h.
 
 // --- accessors: the only places the records above are decoded ----------------------------
 

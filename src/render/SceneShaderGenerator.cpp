@@ -1,6 +1,7 @@
 #include "render/SceneShaderGenerator.h"
 
 #include "render/ExactSceneIntersection.h"
+#include "render/ShaderCodes.h"
 #include "scene/PrimitiveKinds.h"
 #include "scene/SceneBounds.h"
 
@@ -16,48 +17,9 @@ using namespace scene;
 
 namespace {
 
-// The interpreter's instructions (shaders/modules/shape_interpreter.glsl), which it receives
-// as generated #defines.
-enum Opcode { kEnd = 0, kPrimitive = 1, kPushFrame = 2, kPopFrame = 3, kCombine = 4 };
-const char* const kOpcodeNames[] = {"OPCODE_END", "OPCODE_PRIMITIVE", "OPCODE_PUSH_FRAME",
-                                    "OPCODE_POP_FRAME", "OPCODE_COMBINE"};
-
-int csgCode(CsgOperator op)
+int instruction(Opcode opcode)
 {
-    switch (op) {
-    case CsgOperator::Union: return 0;
-    case CsgOperator::Intersection: return 1;
-    case CsgOperator::Difference: return 2;
-    case CsgOperator::SmoothUnion: return 3;
-    case CsgOperator::SmoothIntersection: return 4;
-    case CsgOperator::SmoothDifference: return 5;
-    case CsgOperator::PolynomialSmoothUnion: return 6;
-    case CsgOperator::PolynomialSmoothIntersection: return 7;
-    case CsgOperator::PolynomialSmoothDifference: return 8;
-    }
-    return 0;
-}
-
-const char* csgFunction(CsgOperator op)
-{
-    switch (op) {
-    case CsgOperator::Union: return "opUnion";
-    case CsgOperator::Intersection: return "opIntersection";
-    case CsgOperator::Difference: return "opDifference";
-    case CsgOperator::SmoothUnion: return "opSmoothUnionExp";
-    case CsgOperator::SmoothIntersection: return "opSmoothIntersectionExp";
-    case CsgOperator::SmoothDifference: return "opSmoothDifferenceExp";
-    case CsgOperator::PolynomialSmoothUnion: return "opSmoothUnionPoly";
-    case CsgOperator::PolynomialSmoothIntersection: return "opSmoothIntersectionPoly";
-    case CsgOperator::PolynomialSmoothDifference: return "opSmoothDifferencePoly";
-    }
-    return "opUnion";
-}
-
-bool hasParameter(CsgOperator op)
-{
-    return !(op == CsgOperator::Union || op == CsgOperator::Intersection ||
-             op == CsgOperator::Difference);
+    return static_cast<int>(opcode);
 }
 
 std::string slot(int index)
@@ -98,9 +60,9 @@ public:
         maxDepth_ = std::max(maxDepth_, depth + 1);
         if (shape.transform) {
             const int frame = allocateTransform(*shape.transform);
-            code_.shapeProgram.emplace_back(kPushFrame, frame, 0, 0);
+            code_.shapeProgram.emplace_back(instruction(Opcode::PushFrame), frame, 0, 0);
             emitGeometryProgram(shape.geometry, depth + 1);
-            code_.shapeProgram.emplace_back(kPopFrame, frame, 0, 0);
+            code_.shapeProgram.emplace_back(instruction(Opcode::PopFrame), frame, 0, 0);
         } else {
             emitGeometryProgram(shape.geometry, depth);
         }
@@ -190,13 +152,14 @@ private:
             std::vector<std::string> children;
             for (const Shape& child : node->children)
                 children.push_back(emitFunction(child));
+            const CsgOperatorDescription& op = describe(node->op);
             std::string parameter;
-            if (hasParameter(node->op))
+            if (op.hasParameter())
                 parameter =
                     ", " + slot(allocate({glm::vec4(node->parameter, 0.0f, 0.0f, 0.0f)})) + ".x";
             std::string body = "    float d = " + children[0] + "(p);\n";
             for (std::size_t i = 1; i < children.size(); ++i)
-                body += "    d = " + std::string(csgFunction(node->op)) + "(d, " + children[i] +
+                body += "    d = " + std::string(op.function) + "(d, " + children[i] +
                         "(p)" + parameter + ");\n";
             return body + "    return d;\n";
         }
@@ -208,16 +171,15 @@ private:
         if (const auto* node = std::get_if<CsgNode>(&geometry)) {
             for (std::size_t i = 0; i < node->children.size(); ++i)
                 emitProgram(node->children[i], depth + static_cast<int>(i));
+            const CsgOperatorDescription& op = describe(node->op);
             const int parameter =
-                hasParameter(node->op)
-                    ? allocate({glm::vec4(node->parameter, 0.0f, 0.0f, 0.0f)})
-                    : 0;
-            code_.shapeProgram.emplace_back(kCombine, csgCode(node->op),
+                op.hasParameter() ? allocate({glm::vec4(node->parameter, 0.0f, 0.0f, 0.0f)}) : 0;
+            code_.shapeProgram.emplace_back(instruction(Opcode::Combine), op.code,
                                             static_cast<int>(node->children.size()), parameter);
             return;
         }
         const Primitive primitive = layoutPrimitive(geometry);
-        code_.shapeProgram.emplace_back(kPrimitive, primitive.kind, primitive.first,
+        code_.shapeProgram.emplace_back(instruction(Opcode::Primitive), primitive.kind, primitive.first,
                                         primitive.extra);
     }
 
@@ -514,6 +476,28 @@ std::string primitiveInterpreter()
     return out.str();
 }
 
+// The general shader's CSG operators: a branch per operator, in code order, the last one
+// taken for any code the others are not.
+std::string csgInterpreter()
+{
+    const std::vector<CsgOperatorDescription>& operators = csgOperatorDescriptions();
+    std::ostringstream out;
+    out << "// CSG operator `op` on two distances; `parameter` for the smooth ones "
+           "(scene/CsgOperators.h).\n"
+           "float combine(int op, float a, float b, float parameter)\n{\n";
+    for (std::size_t i = 0; i < operators.size(); ++i) {
+        const CsgOperatorDescription& op = operators[i];
+        const std::string call = std::string(op.function) + "(a, b" +
+                                 (op.hasParameter() ? ", parameter" : "") + ")";
+        if (i + 1 < operators.size())
+            out << "    if (op == " << codeName(op) << ")\n        return " << call << ";\n";
+        else
+            out << "    return " << call << ";\n";
+    }
+    out << "}\n";
+    return out.str();
+}
+
 std::string userSdfDispatcher(const std::map<std::string, int>& ids)
 {
     std::ostringstream out;
@@ -562,14 +546,15 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
         for (const SceneObject& object : scene.objects) {
             code.objectProgramStart.push_back(static_cast<int>(code.shapeProgram.size()));
             compiler.emitProgram(object.shape, 0);
-            code.shapeProgram.emplace_back(kEnd, 0, 0, 0);
+            code.shapeProgram.emplace_back(instruction(Opcode::End), 0, 0, 0);
             const ShapeBound bound = boundShape(object.shape);
             code.objectBounds.push_back(worthBounding(object) && bound.finite
                                             ? glm::vec4(bound.center, bound.radius)
                                             : glm::vec4(0.0f, 0.0f, 0.0f, -1.0f));
         }
         // Declared before the interpreter module, which calls it.
-        code.sceneFunctions = userSdfDispatcher(compiler.userSdfIds()) + "\n" + primitiveInterpreter();
+        code.sceneFunctions = userSdfDispatcher(compiler.userSdfIds()) + "\n" +
+                              primitiveInterpreter() + "\n" + csgInterpreter();
         // The interpreter's culled forms leave out object k < 32 where mask bit k is clear.
         for (std::size_t i = 0; i < scene.objects.size(); ++i)
             code.objectCullingBits.push_back(i < 32 ? 1u << i : 0u);
@@ -591,17 +576,18 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
     define(out, "FINISH_ARRAY_SIZE", std::max<int>(1, scene.finishes.size()));
     define(out, "LIGHT_COUNT", lightCount);
     define(out, "LIGHT_ARRAY_SIZE", std::max(1, lightCount));
-    define(out, "HAS_BLINN_PHONG", f.has(MaterialKind::BlinnPhong) ? 1 : 0);
-    define(out, "HAS_MIRROR", f.has(MaterialKind::Mirror) ? 1 : 0);
-    define(out, "HAS_DIELECTRIC", f.has(MaterialKind::Dielectric) ? 1 : 0);
+    for (const MaterialDescription& material : materialDescriptions())
+        if (material.featureSwitch != nullptr)
+            define(out, material.featureSwitch, f.has(material.kind) ? 1 : 0);
     define(out, "HAS_NULL_INTERFACES", f.nullInterfaces ? 1 : 0);
-    define(out, "HAS_CHECKER_PIGMENT", f.has(PigmentKind::Checker) ? 1 : 0);
-    define(out, "HAS_TEXTURE_PIGMENT", f.has(PigmentKind::Texture) ? 1 : 0);
+    for (const PigmentDescription& pigment : pigmentDescriptions())
+        if (pigment.featureSwitch != nullptr)
+            define(out, pigment.featureSwitch, f.has(pigment.kind) ? 1 : 0);
     define(out, "HAS_POINT_LIGHTS", f.pointLights ? 1 : 0);
     define(out, "HAS_SPHERE_LIGHTS", f.sphereLights ? 1 : 0);
     out << "#define ENVIRONMENT_KIND_FROM_UNIFORM (-1)\n";
     if (specializesFeatures(variant) && environment == EnvironmentBinding::BuiltIn)
-        define(out, "ENVIRONMENT_KIND", static_cast<int>(f.environment));
+        define(out, "ENVIRONMENT_KIND", describe(f.environment).code);
     else
         out << "#define ENVIRONMENT_KIND ENVIRONMENT_KIND_FROM_UNIFORM\n";
     define(out, "PROFILE_COUNTERS", build.profileCounters ? 1 : 0);
@@ -609,14 +595,7 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
     // sphere tracer's loops are left out, which llvmpipe would otherwise run once per ray
     // with no pixel in them.
     define(out, "HAS_MARCHED_OBJECTS", code.marchesAnything ? 1 : 0);
-    if (!specialized) {
-        // The interpreter's codes, from the tables that define them.
-        for (int opcode = kEnd; opcode <= kCombine; ++opcode)
-            define(out, kOpcodeNames[opcode], opcode);
-        for (const PrimitiveKind& kind : primitiveKinds())
-            define(out, primitiveCodeName(kind), kind.code);
-        define(out, "PRIMITIVE_USER", userSdfCode());
-    }
+    out << shaderCodeDefines();
     code.defines = out.str();
     return code;
 }

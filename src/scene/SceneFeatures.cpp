@@ -74,9 +74,10 @@ SceneFeatures SceneFeatures::everything(const Scene& scene)
                              CsgOperator::PolynomialSmoothIntersection,
                              CsgOperator::PolynomialSmoothDifference};
     features.transforms = true;
-    features.materials = {MaterialKind::Lambertian, MaterialKind::BlinnPhong, MaterialKind::Mirror,
-                          MaterialKind::Dielectric};
-    features.pigments = {PigmentKind::Solid, PigmentKind::Checker, PigmentKind::Texture};
+    for (const MaterialDescription& material : materialDescriptions())
+        features.materials.insert(material.kind);
+    for (const PigmentDescription& pigment : pigmentDescriptions())
+        features.pigments.insert(pigment.kind);
     features.nullInterfaces = true;
     features.pointLights = true;
     features.sphereLights = true;
@@ -112,23 +113,12 @@ std::string SceneFeatures::describe() const
 
 const char* toString(MaterialKind kind)
 {
-    switch (kind) {
-    case MaterialKind::Lambertian: return "lambertian";
-    case MaterialKind::BlinnPhong: return "blinn-phong";
-    case MaterialKind::Mirror: return "mirror";
-    case MaterialKind::Dielectric: return "dielectric";
-    }
-    return "?";
+    return describe(kind).name;
 }
 
 const char* toString(PigmentKind kind)
 {
-    switch (kind) {
-    case PigmentKind::Solid: return "solid";
-    case PigmentKind::Checker: return "checker";
-    case PigmentKind::Texture: return "texmap";
-    }
-    return "?";
+    return describe(kind).keyword;
 }
 
 const char* toString(CsgOperator op)
@@ -149,12 +139,7 @@ const char* toString(CsgOperator op)
 
 const char* toString(EnvironmentKind kind)
 {
-    switch (kind) {
-    case EnvironmentKind::None: return "none";
-    case EnvironmentKind::Sky: return "sky";
-    case EnvironmentKind::Constant: return "constant";
-    }
-    return "?";
+    return describe(kind).keyword;
 }
 
 }  // namespace scene

@@ -209,3 +209,59 @@ TEST(RayCulling, GeneralShaderCullsNothing)
 
 }  // namespace
 }  // namespace scene_tests
+
+namespace scene_tests {
+namespace {
+
+// Every kind's code reaches every shader as a #define, with the value the host packs, and
+// every kind's feature switch is defined (0 or 1).
+TEST(KindCodesInTheShader, EveryKindHasItsDefineAndEverySwitchIsSet)
+{
+    const scene::Scene scene = parse(sceneWithObjects(1, "0 0 sphere 0 0 0 1"));
+    for (const ShaderVariant variant : {ShaderVariant::Specialized, ShaderVariant::General}) {
+        const SceneShaderCode code = generateSceneShaderCode(scene, {variant});
+        auto defines = [&](const std::string& name, int value) {
+            return code.defines.find("#define " + name + " " + std::to_string(value) + "\n") !=
+                   std::string::npos;
+        };
+        for (const auto& op : scene::csgOperatorDescriptions())
+            EXPECT_TRUE(defines(scene::codeName(op), op.code)) << scene::codeName(op);
+        for (const auto& material : scene::materialDescriptions()) {
+            EXPECT_TRUE(defines(scene::codeName(material), material.code))
+                << scene::codeName(material);
+            if (material.featureSwitch != nullptr)
+                EXPECT_NE(code.defines.find(std::string("#define ") + material.featureSwitch),
+                          std::string::npos)
+                    << material.featureSwitch;
+        }
+        for (const auto& pigment : scene::pigmentDescriptions()) {
+            EXPECT_TRUE(defines(scene::codeName(pigment), pigment.code))
+                << scene::codeName(pigment);
+            if (pigment.featureSwitch != nullptr)
+                EXPECT_NE(code.defines.find(std::string("#define ") + pigment.featureSwitch),
+                          std::string::npos)
+                    << pigment.featureSwitch;
+        }
+        for (const auto& environment : scene::environmentDescriptions())
+            EXPECT_TRUE(defines(scene::codeName(environment), environment.code))
+                << scene::codeName(environment);
+    }
+}
+
+TEST(KindCodesInTheShader, TheGeneralShaderCombinesByEveryOperatorsCode)
+{
+    const SceneShaderCode code = generateSceneShaderCode(
+        parse(sceneWithObjects(1, "0 0 sphere 0 0 0 1")), {ShaderVariant::General});
+    const auto& operators = scene::csgOperatorDescriptions();
+    // The last operator is combine's fallthrough; every other one has its branch.
+    for (std::size_t i = 0; i + 1 < operators.size(); ++i)
+        EXPECT_NE(code.sceneFunctions.find("if (op == " + scene::codeName(operators[i]) +
+                                           ")\n        return " + operators[i].function),
+                  std::string::npos)
+            << operators[i].identifier;
+    EXPECT_NE(code.sceneFunctions.find(std::string("    return ") + operators.back().function),
+              std::string::npos);
+}
+
+}  // namespace
+}  // namespace scene_tests
