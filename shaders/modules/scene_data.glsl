@@ -1,6 +1,8 @@
 // The scene's numbers, as uniforms: editing a value re-uploads them and never recompiles.
-// The host (render/SceneUniforms.cpp) defines the array sizes and fills them; the layout of
-// each record is documented there and repeated at the accessors below.
+// The host (render/SceneUniforms.cpp) fills them; the generated preamble sizes them. Each
+// record's layout is written here. Objects, finishes and lights are decoded only by the
+// accessors below; a pigment record only by pigmentColor (pigments.glsl), and an object's
+// shape program start (w) only by the interpreter (shape_interpreter.glsl).
 
 // Shape parameters: one or more vec4 per primitive or transform.
 uniform vec4 uShapeParameters[SHAPE_PARAMETER_ARRAY_SIZE];
@@ -27,7 +29,7 @@ uniform uint uSphereLightPieces;
 // (render/ShaderCodes.h), from the kinds' descriptions in scene/Pigments.h and
 // scene/Materials.h.
 
-// --- accessors: the only places the records above are decoded ----------------------------
+// --- accessors: where object, finish and light records are decoded -----------------------
 
 int objectPigment(int object) { return uObjects[object].x; }
 int objectFinish(int object) { return uObjects[object].y; }

@@ -109,9 +109,6 @@ struct SceneObject {
     int line = 0;  // where the object starts in its file, for messages
 };
 
-// The format's default sky, 0.5 * (0.7, 0.8, 1.0) * (1 - 0.5 * d.y).
-glm::vec3 skyRadiance(const glm::vec3& unitDirection);
-
 struct Scene {
     std::filesystem::path sourcePath;
     Camera camera;

@@ -18,7 +18,6 @@ struct ShapeFeatures {
     void operator()(const UserSdf& user) { features.userSdfs[user.name] = user.sourcePath; }
     void operator()(const CsgNode& node)
     {
-        features.csgOperators.insert(node.op);
         for (const Shape& child : node.children)
             visit(child);
     }
@@ -64,15 +63,6 @@ SceneFeatures SceneFeatures::everything(const Scene& scene)
 {
     SceneFeatures features;
     features.userSdfs = analyseFeatures(scene).userSdfs;
-    features.csgOperators = {CsgOperator::Union,
-                             CsgOperator::Intersection,
-                             CsgOperator::Difference,
-                             CsgOperator::SmoothUnion,
-                             CsgOperator::SmoothIntersection,
-                             CsgOperator::SmoothDifference,
-                             CsgOperator::PolynomialSmoothUnion,
-                             CsgOperator::PolynomialSmoothIntersection,
-                             CsgOperator::PolynomialSmoothDifference};
     features.transforms = true;
     for (const MaterialDescription& material : materialDescriptions())
         features.materials.insert(material.kind);
@@ -95,7 +85,6 @@ std::string SceneFeatures::describe() const
         text << (it == userSdfs.begin() ? "" : ", ") << it->first << " (" << it->second.string()
              << ")";
     text << "\n";
-    text << "CSG operators: " << join(csgOperators) << "\n";
     text << "transforms:    " << (transforms ? "yes" : "no") << "\n";
     text << "materials:     " << join(materials) << "\n";
     text << "pigments:      " << join(pigments) << "\n";
@@ -119,22 +108,6 @@ const char* toString(MaterialKind kind)
 const char* toString(PigmentKind kind)
 {
     return describe(kind).keyword;
-}
-
-const char* toString(CsgOperator op)
-{
-    switch (op) {
-    case CsgOperator::Union: return "union";
-    case CsgOperator::Intersection: return "intersection";
-    case CsgOperator::Difference: return "difference";
-    case CsgOperator::SmoothUnion: return "smooth_union exp";
-    case CsgOperator::SmoothIntersection: return "smooth_intersection exp";
-    case CsgOperator::SmoothDifference: return "smooth_difference exp";
-    case CsgOperator::PolynomialSmoothUnion: return "smooth_union poly";
-    case CsgOperator::PolynomialSmoothIntersection: return "smooth_intersection poly";
-    case CsgOperator::PolynomialSmoothDifference: return "smooth_difference poly";
-    }
-    return "?";
 }
 
 const char* toString(EnvironmentKind kind)
