@@ -20,8 +20,8 @@
 //                 relative MSE of the Monte Carlo denoising literature, e.g. Rousselle,
 //                 Knaus and Zwicker 2011); see kRelativeMseEpsilon for the choice of eps;
 //   tone RMSE     root mean square difference of the displayed pictures on the 0..255 scale,
-//                 after the display's tone map (shaders/modules/tone_map.frag) in double,
-//                 not rounded to 8 bits, so that differences under one level still show.
+//                 after the display's tone curve (render/ToneCurve.h) in double, not
+//                 rounded to 8 bits, so that differences under one level still show.
 //
 // The noise of an image that is the mean of n samples is measured without a second render:
 // the same run's image at n/2 samples, H, and at n, M, give the second half's mean
@@ -33,6 +33,8 @@
 #include "render/PathTracerProgram.h"
 #include "render/ProgressiveRenderer.h"
 #include "render/SceneUniforms.h"
+#include "render/ToneCurve.h"
+#include "render/ToneMapper.h"
 #include "scene/FileLookup.h"
 #include "scene/InvisibleObjects.h"
 #include "scene/SceneParser.h"
@@ -74,28 +76,11 @@ namespace {
 // which weighs every displayed level alike, covers it.
 constexpr double kRelativeMseEpsilon = 0.01;
 
-// shaders/modules/tone_map.frag, in double: exposure 4, John Hable's filmic curve
-// ("Uncharted 2 tone mapping", http://filmicgames.com/archives/75) normalised to a white
-// point of 11.2, gamma 2.2. Must follow that file when it changes.
-double hableFilmic(double x)
-{
-    const double A = 0.15;  // shoulder strength
-    const double B = 0.50;  // linear strength
-    const double C = 0.10;  // linear angle
-    const double D = 0.20;  // toe strength
-    const double E = 0.02;  // toe numerator
-    const double F = 0.30;  // toe denominator
-    return ((x * (A * x + C * B) + D * E) / (x * (A * x + B) + D * F)) - E / F;
-}
-
-// Displayed value of one channel of linear radiance, on the 0..255 scale, unrounded.
+// Displayed value of one channel of linear radiance, on the 0..255 scale, unrounded: the
+// display's tone curve (render/ToneCurve.h) in double at the default exposure.
 double displayValue(double radiance)
 {
-    const double kExposure = 4.0;
-    const double kWhitePoint = 11.2;
-    const double mapped =
-        hableFilmic(kExposure * std::max(radiance, 0.0)) / hableFilmic(kWhitePoint);
-    return 255.0 * std::pow(std::clamp(mapped, 0.0, 1.0), 1.0 / 2.2);
+    return 255.0 * render::displayValue(radiance, render::ToneMapper::kDefaultExposure);
 }
 
 void requireSameShape(const io::Image& a, const io::Image& b)
