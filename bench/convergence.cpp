@@ -20,21 +20,21 @@
 //                 relative MSE of the Monte Carlo denoising literature, e.g. Rousselle,
 //                 Knaus and Zwicker 2011); see kRelativeMseEpsilon for the choice of eps;
 //   tone RMSE     root mean square difference of the displayed pictures on the 0..255 scale,
-//                 after the display's tone map (shaders/modules/tone_map.frag) in double,
-//                 not rounded to 8 bits, so that differences under one level still show.
+//                 after the display's tone curve (render/ToneCurve.h) in double, not
+//                 rounded to 8 bits, so that differences under one level still show.
 //
 // The noise of an image that is the mean of n samples is measured without a second render:
 // the same run's image at n/2 samples, H, and at n, M, give the second half's mean
 // B = 2M - H, independent of H, and M - H = (B - H)/2, whose square has expectation
 // Var(M). So mean((M - H)^2 / (ref^2 + eps)) estimates the relative MSE that noise alone
 // puts in M; an error well above the noise of both image and reference is bias.
+#include "convergence/ImageErrors.h"
+#include "convergence/References.h"
+#include "convergence/TimedRenderer.h"
 #include "io/ImageFile.h"
 #include "platform/OsMesaContext.h"
-#include "render/PathTracerProgram.h"
 #include "render/ProgressiveRenderer.h"
-#include "render/SceneUniforms.h"
 #include "scene/FileLookup.h"
-#include "scene/InvisibleObjects.h"
 #include "scene/SceneParser.h"
 
 #include <algorithm>
@@ -48,7 +48,6 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
-#include <iterator>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -56,251 +55,14 @@
 #include <thread>
 #include <vector>
 
-#include <time.h>  // clock_gettime, CLOCK_PROCESS_CPUTIME_ID (POSIX)
-
 namespace fs = std::filesystem;
 
 namespace {
 
-// ---------------------------------------------------------------------------------------
-// Error metrics
-
-// The relative MSE's eps, in units of radiance squared. Without it, pixels whose reference is
-// black (a red wall's green channel) would divide by zero, and nearly black ones (shadowed
-// corners, where a sample's relative spread is largest) would outweigh everything a viewer
-// sees. 0.01, the value common in the denoising literature, makes the error absolute below a
-// radiance of 0.1 and relative above. Under the display's tone map radiance 0.1 is level 105
-// of 255, so the darker part of the picture counts less than relatively; the tone RMSE,
-// which weighs every displayed level alike, covers it.
-constexpr double kRelativeMseEpsilon = 0.01;
-
-// shaders/modules/tone_map.frag, in double: exposure 4, John Hable's filmic curve
-// ("Uncharted 2 tone mapping", http://filmicgames.com/archives/75) normalised to a white
-// point of 11.2, gamma 2.2. Must follow that file when it changes.
-double hableFilmic(double x)
-{
-    const double A = 0.15;  // shoulder strength
-    const double B = 0.50;  // linear strength
-    const double C = 0.10;  // linear angle
-    const double D = 0.20;  // toe strength
-    const double E = 0.02;  // toe numerator
-    const double F = 0.30;  // toe denominator
-    return ((x * (A * x + C * B) + D * E) / (x * (A * x + B) + D * F)) - E / F;
-}
-
-// Displayed value of one channel of linear radiance, on the 0..255 scale, unrounded.
-double displayValue(double radiance)
-{
-    const double kExposure = 4.0;
-    const double kWhitePoint = 11.2;
-    const double mapped =
-        hableFilmic(kExposure * std::max(radiance, 0.0)) / hableFilmic(kWhitePoint);
-    return 255.0 * std::pow(std::clamp(mapped, 0.0, 1.0), 1.0 / 2.2);
-}
-
-void requireSameShape(const io::Image& a, const io::Image& b)
-{
-    if (a.width != b.width || a.height != b.height || a.channels != b.channels)
-        throw std::runtime_error("images of different sizes compared");
-}
-
-struct ImageError {
-    double relativeMse = 0.0;
-    double toneMappedRmse = 0.0;
-};
-
-// Sum of `image` over every pixel and channel relative to the reference's, minus 1: a bias
-// that darkens or brightens the image as a whole (paths cut short, light leaking) shows here
-// clearly even when the per-pixel error is mostly noise, which averages out of the sum.
-double brightnessBias(const io::Image& image, const io::Image& reference)
-{
-    requireSameShape(image, reference);
-    double sum = 0.0;
-    double referenceSum = 0.0;
-    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-        sum += image.pixels[i];
-        referenceSum += reference.pixels[i];
-    }
-    return referenceSum > 0.0 ? sum / referenceSum - 1.0 : 0.0;
-}
-
-// Standard deviation of brightnessBias's image sum from noise, relative to `referenceSum`,
-// from the renderer's per-pixel variance of the mean (sampleStatistics, channel b). That
-// variance is the channels' average, and the channels' covariance is not kept: the
-// channels are taken as fully correlated, which can only overstate the noise.
-double brightnessNoise(const io::Image& statistics, double referenceSum)
-{
-    double variance = 0.0;
-    for (int y = 0; y < statistics.height; ++y)
-        for (int x = 0; x < statistics.width; ++x)
-            variance += 9.0 * statistics.at(x, y, 2);
-    return referenceSum > 0.0 ? std::sqrt(variance) / referenceSum : 0.0;
-}
-
-double imageSum(const io::Image& image)
-{
-    double sum = 0.0;
-    for (float value : image.pixels)
-        sum += value;
-    return sum;
-}
-
-// Error of `image` against `reference`.
-ImageError errorAgainst(const io::Image& image, const io::Image& reference)
-{
-    requireSameShape(image, reference);
-    double relativeSum = 0.0;
-    double toneSum = 0.0;
-    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-        const double x = image.pixels[i];
-        const double r = reference.pixels[i];
-        relativeSum += (x - r) * (x - r) / (r * r + kRelativeMseEpsilon);
-        const double displayed = displayValue(x) - displayValue(r);
-        toneSum += displayed * displayed;
-    }
-    const double count = static_cast<double>(image.pixels.size());
-    return {relativeSum / count, std::sqrt(toneSum / count)};
-}
-
-// The error that noise alone puts in `full`, the mean of n samples, from `half`, the mean of
-// the first n/2 of them (see the top of this file), weighted like errorAgainst(reference).
-// For the tone-mapped image it holds to first order in the noise (the tone map's slope is
-// taken as constant over the noise's spread).
-ImageError noiseOfMean(const io::Image& half, const io::Image& full, const io::Image& reference)
-{
-    requireSameShape(half, full);
-    requireSameShape(full, reference);
-    double relativeSum = 0.0;
-    double toneSum = 0.0;
-    for (std::size_t i = 0; i < full.pixels.size(); ++i) {
-        const double difference = static_cast<double>(full.pixels[i]) - half.pixels[i];
-        const double r = reference.pixels[i];
-        relativeSum += difference * difference / (r * r + kRelativeMseEpsilon);
-        const double displayed = displayValue(full.pixels[i]) - displayValue(half.pixels[i]);
-        toneSum += displayed * displayed;
-    }
-    const double count = static_cast<double>(full.pixels.size());
-    return {relativeSum / count, std::sqrt(toneSum / count)};
-}
-
-// ---------------------------------------------------------------------------------------
-// Timed rendering
-
-double secondsSince(std::chrono::steady_clock::time_point start)
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// CPU time of the whole process, llvmpipe's rendering threads included. Wall time is what a
-// user waits; CPU time is the work, and on a machine shared with other jobs it varies far
-// less than wall time does.
-double processCpuSeconds()
-{
-    timespec now{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
-    return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
-}
-
-// A progressive renderer whose clock counts only the frames that add samples: construction
-// (shader compile and link) and one warm-up frame (llvmpipe's code generation at the first
-// draw) are timed apart, and the warm-up sample is thrown away.
-class TimedRenderer {
-public:
-    TimedRenderer(const scene::Scene& scene, int width, int height,
-                  const render::RenderSettings& settings, int samplesPerFrame)
-        : renderer_(scene, width, height, settings), samplesPerFrame_(samplesPerFrame)
-    {
-        compileSeconds_ = renderer_.compileSeconds();
-        const auto start = std::chrono::steady_clock::now();
-        renderer_.renderFrame({}, 1);
-        warmUpSeconds_ = secondsSince(start);
-        // The same scene again: the program (and the code llvmpipe generated for it) stays,
-        // the accumulation restarts from nothing.
-        renderer_.setScene(scene);
-    }
-
-    // Renders until the image holds `samplesPerPixel` samples per pixel.
-    void renderTo(int samplesPerPixel)
-    {
-        while (renderer_.samplesPerPixel() < samplesPerPixel) {
-            const int samples =
-                std::min(samplesPerFrame_, samplesPerPixel - renderer_.samplesPerPixel());
-            const auto start = std::chrono::steady_clock::now();
-            const double cpuStart = processCpuSeconds();
-            renderer_.renderFrame({}, samples);
-            renderSeconds_ += secondsSince(start);
-            cpuSeconds_ += processCpuSeconds() - cpuStart;
-        }
-    }
-
-    // Renders whole frames while the clock is below `budgetSeconds`. A frame still drawing
-    // when the budget runs out is abandoned between bands (its samples are not in the image)
-    // but its time is spent: the image is what this much rendering time gives. Near the end,
-    // frames hold fewer samples, as many as the time left is expected to take, so that a
-    // frame of one band (small images) overruns the budget by little.
-    void renderUntil(double budgetSeconds)
-    {
-        while (renderSeconds_ < budgetSeconds) {
-            int samples = samplesPerFrame_;
-            if (samplesPerPixel() > 0) {
-                const double secondsPerSample = renderSeconds_ / samplesPerPixel();
-                const double affordable = (budgetSeconds - renderSeconds_) / secondsPerSample;
-                samples = std::clamp(static_cast<int>(affordable), 1, samplesPerFrame_);
-            }
-            const auto start = std::chrono::steady_clock::now();
-            const double cpuStart = processCpuSeconds();
-            const double before = renderSeconds_;
-            const bool completed = renderer_.renderFrame(
-                [&] { return before + secondsSince(start) < budgetSeconds; }, samples);
-            renderSeconds_ += secondsSince(start);
-            cpuSeconds_ += processCpuSeconds() - cpuStart;
-            if (completed)
-                secondsAtLastFrame_ = renderSeconds_;
-            else
-                break;
-        }
-    }
-
-    const render::ProgressiveRenderer& renderer() const { return renderer_; }
-    double compileSeconds() const { return compileSeconds_; }
-    double warmUpSeconds() const { return warmUpSeconds_; }
-    double renderSeconds() const { return renderSeconds_; }
-    double cpuSeconds() const { return cpuSeconds_; }
-    double secondsAtLastFrame() const { return secondsAtLastFrame_; }
-    int samplesPerPixel() const { return renderer_.samplesPerPixel(); }
-    double megapathsPerSecond() const
-    {
-        return static_cast<double>(renderer_.width()) * renderer_.height() * samplesPerPixel() /
-               std::max(renderSeconds_, 1e-9) / 1e6;
-    }
-
-private:
-    render::ProgressiveRenderer renderer_;
-    int samplesPerFrame_;
-    double compileSeconds_ = 0.0;
-    double warmUpSeconds_ = 0.0;
-    double renderSeconds_ = 0.0;
-    double cpuSeconds_ = 0.0;
-    double secondsAtLastFrame_ = 0.0;
-};
-
-// Paths per pixel in one draw: one at 320x240 and above, more at small sizes, where the
-// per-frame cost of the host (binding, band timing, glFinish) would otherwise be measured too.
-int defaultSamplesPerFrame(int width, int height)
-{
-    const int pixelsPerDraw = 320 * 240;
-    return std::clamp(pixelsPerDraw / std::max(1, width * height), 1, 64);
-}
+using namespace convergence;
 
 // ---------------------------------------------------------------------------------------
 // Settings
-
-std::string formatNumber(double value)
-{
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
 
 bool sameSettings(const render::RenderSettings& a, const render::RenderSettings& b)
 {
@@ -309,21 +71,6 @@ bool sameSettings(const render::RenderSettings& a, const render::RenderSettings&
            a.maxBounces == b.maxBounces && a.russianRouletteDepth == b.russianRouletteDepth &&
            a.multipleImportanceSampling == b.multipleImportanceSampling &&
            a.dielectricFresnel == b.dielectricFresnel && a.variant == b.variant;
-}
-
-// Every setting that decides the image, as text: part of the reference's cache key.
-std::string describeSettings(const render::RenderSettings& s)
-{
-    std::ostringstream text;
-    text << "hitTolerance=" << formatNumber(s.hitTolerance) << " maxMarchSteps=" << s.maxMarchSteps
-         << " overRelaxation=" << formatNumber(s.overRelaxation)
-         << " stepScale=" << formatNumber(s.stepScale) << " maxBounces=" << s.maxBounces
-         << " russianRouletteDepth=" << s.russianRouletteDepth
-         << " mis=" << (s.multipleImportanceSampling ? 1 : 0)
-         << " fresnel="
-         << (s.dielectricFresnel == render::FresnelModel::Exact ? "exact" : "schlick")
-         << " variant=" << static_cast<int>(s.variant) << " seed=" << s.seed;
-    return text.str();
 }
 
 struct SettingValue {
@@ -374,192 +121,6 @@ std::vector<SettingSweep> accuracySettingSweeps()
                       {{0, "schlick", setFresnel(render::FresnelModel::Schlick)},
                        {1, "exact", setFresnel(render::FresnelModel::Exact)}}});
     return sweeps;
-}
-
-// ---------------------------------------------------------------------------------------
-// The reference and its cache
-
-// 64-bit FNV-1a (Fowler, Noll and Vo; http://www.isthe.com/chongo/tech/comp/fnv/): a stable
-// hash for cache file names, unlike std::hash, which may differ between library versions.
-class Fnv1a64 {
-public:
-    void add(const void* data, std::size_t size)
-    {
-        const auto* bytes = static_cast<const unsigned char*>(data);
-        for (std::size_t i = 0; i < size; ++i) {
-            hash_ ^= bytes[i];
-            hash_ *= 0x100000001b3ULL;
-        }
-    }
-    void add(const std::string& text)
-    {
-        add(text.data(), text.size());
-        add("\0", 1);  // separator: "ab"+"c" and "a"+"bc" hash differently
-    }
-    template <typename T>
-    void addVector(const std::vector<T>& values)
-    {
-        add(values.data(), values.size() * sizeof(T));
-        add("\0", 1);
-    }
-    std::string hex() const
-    {
-        char text[17];
-        std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash_));
-        return text;
-    }
-
-private:
-    std::uint64_t hash_ = 0xcbf29ce484222325ULL;
-};
-
-std::string fileBytes(const fs::path& path)
-{
-    std::ifstream file(path, std::ios::binary);
-    if (!file)
-        throw std::runtime_error("cannot read " + path.string());
-    return std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
-}
-
-// Everything that decides a reference's pixels: the scene file, the shader exactly as it is
-// assembled for the scene (modules and user SDFs included), the numbers the host packs for
-// it, the texture files, the settings, the size, the spp and the seed. Anything else the host
-// computes at upload time is not covered; --refresh-references re-renders regardless.
-std::string referenceKey(const scene::Scene& parsed, const render::RenderSettings& settings,
-                         int width, int height, int samplesPerPixel)
-{
-    const render::PreparedScene prepared = render::prepareScene(
-        parsed, render::shaderBuild(settings), render::defaultShaderDirectory());
-    const render::SceneShaderCode& code = prepared.code;
-    const render::SceneUniforms& uniforms = prepared.uniforms;
-    Fnv1a64 hash;
-    hash.add("bench_convergence reference 2");
-    hash.add(fileBytes(parsed.sourcePath));
-    hash.add(prepared.fragmentSource.text());
-    hash.addVector(code.shapeParameters);
-    hash.addVector(uniforms.objects);
-    hash.addVector(uniforms.pigments);
-    hash.addVector(uniforms.finishes);
-    hash.addVector(uniforms.lights);
-    for (const fs::path& texture : uniforms.textureLayers)
-        hash.add(fileBytes(texture));
-    hash.add(describeSettings(settings));
-    hash.add(std::to_string(width) + "x" + std::to_string(height) + " " +
-             std::to_string(samplesPerPixel) + "spp");
-    return hash.hex();
-}
-
-struct Reference {
-    io::Image image;
-    io::Image halfImage;  // the same run at half the samples, for its noise
-    ImageError noise;     // what noise alone leaves in `image`
-    double brightnessNoise = 0.0;  // of its sum over the image, relative to the sum
-    int samplesPerPixel = 0;
-    double renderSeconds = 0.0;
-    double compileSeconds = 0.0;
-    double warmUpSeconds = 0.0;
-    std::uint64_t discardedSamples = 0;
-    bool fromCache = false;
-    std::string key;
-};
-
-std::string sceneName(const fs::path& path)
-{
-    return path.stem().string();
-}
-
-struct ReferenceOptions {
-    int samplesPerPixel = 4096;
-    std::uint64_t seed = 1;
-    fs::path cacheDirectory;
-    bool refresh = false;
-};
-
-// Reads `key=value` lines.
-std::optional<std::string> sidecarValue(const fs::path& path, const std::string& name)
-{
-    std::ifstream file(path);
-    std::string line;
-    while (std::getline(file, line))
-        if (line.rfind(name + "=", 0) == 0)
-            return line.substr(name.size() + 1);
-    return std::nullopt;
-}
-
-Reference obtainReference(const scene::Scene& scene, int width, int height,
-                          const ReferenceOptions& options)
-{
-    render::RenderSettings settings;
-    settings.seed = options.seed;
-    Reference reference;
-    reference.samplesPerPixel = options.samplesPerPixel;
-    reference.key = referenceKey(scene, settings, width, height, options.samplesPerPixel);
-    const std::string stem = sceneName(scene.sourcePath) + "-" + std::to_string(width) + "x" +
-                             std::to_string(height) + "-" +
-                             std::to_string(options.samplesPerPixel) + "spp-" + reference.key;
-    const fs::path fullPath = options.cacheDirectory / (stem + ".exr");
-    const fs::path halfPath = options.cacheDirectory / (stem + "-half.exr");
-    const fs::path sidecarPath = options.cacheDirectory / (stem + ".txt");
-
-    const bool cached =
-        fs::exists(fullPath) && fs::exists(halfPath) && fs::exists(sidecarPath);
-    if (cached && !options.refresh) {
-        auto recorded = [&](const std::string& name) {
-            return sidecarValue(sidecarPath, name).value_or("0");
-        };
-        reference.image = io::readImage(fullPath);
-        reference.halfImage = io::readImage(halfPath);
-        reference.renderSeconds = std::stod(recorded("render_seconds"));
-        reference.compileSeconds = std::stod(recorded("compile_seconds"));
-        reference.warmUpSeconds = std::stod(recorded("warm_up_seconds"));
-        reference.discardedSamples = std::stoull(recorded("discarded_samples"));
-        reference.brightnessNoise = std::stod(recorded("brightness_noise"));
-        reference.fromCache = true;
-        reference.image.channels = reference.halfImage.channels = 3;
-        if (reference.image.width != width || reference.image.height != height)
-            throw std::runtime_error(fullPath.string() + " is not " + std::to_string(width) + "x" +
-                                     std::to_string(height));
-    } else {
-        std::fprintf(stderr, "rendering the reference of %s: %dx%d, %d spp ...\n",
-                     sceneName(scene.sourcePath).c_str(), width, height, options.samplesPerPixel);
-        TimedRenderer run(scene, width, height, settings, defaultSamplesPerFrame(width, height));
-        const int half = options.samplesPerPixel / 2;
-        // Progress in tenths, for references that take an hour.
-        for (int tenth = 1; tenth <= 10; ++tenth) {
-            const int target = options.samplesPerPixel * tenth / 10;
-            if (half >= 1 && target >= half && reference.halfImage.pixels.empty()) {
-                run.renderTo(half);
-                reference.halfImage = run.renderer().radiance();
-            }
-            run.renderTo(target);
-            std::fprintf(stderr, "  %d/%d spp, %.0f s\n", run.samplesPerPixel(),
-                         options.samplesPerPixel, run.renderSeconds());
-        }
-        reference.image = run.renderer().radiance();
-        if (reference.halfImage.pixels.empty())  // a reference of 1 spp: no noise estimate
-            reference.halfImage = reference.image;
-        reference.renderSeconds = run.renderSeconds();
-        reference.compileSeconds = run.compileSeconds();
-        reference.warmUpSeconds = run.warmUpSeconds();
-        reference.discardedSamples = run.renderer().discardedSamples();
-        reference.brightnessNoise =
-            brightnessNoise(run.renderer().sampleStatistics(), imageSum(reference.image));
-        fs::create_directories(options.cacheDirectory);
-        io::writeImage(fullPath, reference.image);
-        io::writeImage(halfPath, reference.halfImage);
-        std::ofstream sidecar(sidecarPath);
-        sidecar << "scene=" << fs::absolute(scene.sourcePath).string() << "\n"
-                << "size=" << width << "x" << height << "\n"
-                << "spp=" << options.samplesPerPixel << "\n"
-                << "settings=" << describeSettings(settings) << "\n"
-                << "render_seconds=" << reference.renderSeconds << "\n"
-                << "compile_seconds=" << reference.compileSeconds << "\n"
-                << "warm_up_seconds=" << reference.warmUpSeconds << "\n"
-                << "discarded_samples=" << reference.discardedSamples << "\n"
-                << "brightness_noise=" << reference.brightnessNoise << "\n";
-    }
-    reference.noise = noiseOfMean(reference.halfImage, reference.image, reference.image);
-    return reference;
 }
 
 // ---------------------------------------------------------------------------------------

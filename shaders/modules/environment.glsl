@@ -1,9 +1,6 @@
 // Radiance of rays that escape the scene. ENVIRONMENT_KIND is fixed by the host for the
-// scene; the general shader reads the kind from a uniform instead.
-
-const int ENVIRONMENT_NONE = 0;
-const int ENVIRONMENT_SKY = 1;
-const int ENVIRONMENT_CONSTANT = 2;
+// scene; the general shader reads the kind from a uniform instead. The kinds' codes
+// (ENVIRONMENT_*) are generated #defines, from scene/Environments.h.
 
 uniform int uEnvironmentKind;
 uniform vec3 uEnvironmentColor;

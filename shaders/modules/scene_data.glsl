@@ -1,6 +1,8 @@
 // The scene's numbers, as uniforms: editing a value re-uploads them and never recompiles.
-// The host (render/SceneUniforms.cpp) defines the array sizes and fills them; the layout of
-// each record is documented there and repeated at the accessors below.
+// The host (render/SceneUniforms.cpp) fills them; the generated preamble sizes them. Each
+// record's layout is written here. Objects, finishes and lights are decoded only by the
+// accessors below; a pigment record only by pigmentColor (pigments.glsl), and an object's
+// shape program start (w) only by the interpreter (shape_interpreter.glsl).
 
 // Shape parameters: one or more vec4 per primitive or transform.
 uniform vec4 uShapeParameters[SHAPE_PARAMETER_ARRAY_SIZE];
@@ -23,16 +25,11 @@ uniform vec4 uLights[3 * LIGHT_ARRAY_SIZE];
 // and intersect the spheres exactly instead (ray_queries_traced.glsl).
 uniform uint uSphereLightPieces;
 
-const int PIGMENT_SOLID = 0;
-const int PIGMENT_CHECKER = 1;
-const int PIGMENT_TEXTURE = 2;
+// The pigment and material codes (PIGMENT_*, MATERIAL_*) are generated #defines
+// (render/ShaderCodes.h), from the kinds' descriptions in scene/Pigments.h and
+// scene/Materials.h.
 
-const int MATERIAL_LAMBERTIAN = 0;
-const int MATERIAL_BLINN_PHONG = 1;
-const int MATERIAL_MIRROR = 2;
-const int MATERIAL_DIELECTRIC = 3;
-
-// --- accessors: the only places the records above are decoded ----------------------------
+// --- accessors: where object, finish and light records are decoded -----------------------
 
 int objectPigment(int object) { return uObjects[object].x; }
 int objectFinish(int object) { return uObjects[object].y; }

@@ -9,9 +9,10 @@
 //   POP_FRAME  a = first transform parameter: back to the parent frame, distance rescaled
 //   COMBINE    a = CSG operator, b = operand count, c = parameter slot (smooth operators)
 //   END        the object's distance is on the stack
-// The opcodes (OPCODE_*), the primitive codes (PRIMITIVE_*) and primitiveDistance, the
-// switch over the primitive kinds, are generated (render/SceneShaderGenerator.cpp) from the
-// kinds' descriptions in scene/Primitives.h.
+// The opcodes (OPCODE_*), the primitive and CSG codes (PRIMITIVE_*, CSG_*) and the switches
+// over those kinds, primitiveDistance and combine, are generated
+// (render/SceneShaderGenerator.cpp) from the kinds' descriptions in scene/Primitives.h and
+// scene/CsgOperators.h.
 
 uniform ivec4 uShapeProgram[SHAPE_PROGRAM_ARRAY_SIZE];
 // Per object, a bounding sphere (centre, radius) for expensive shapes, radius < 0 for none:
@@ -22,37 +23,6 @@ bool mayBeNearer(int object, vec3 p, float known)
 {
     vec4 bound = uObjectBounds[object];
     return bound.w < 0.0 || sdSphere(p - bound.xyz, bound.w) < known;
-}
-
-const int CSG_UNION = 0;
-const int CSG_INTERSECTION = 1;
-const int CSG_DIFFERENCE = 2;
-const int CSG_SMOOTH_UNION = 3;
-const int CSG_SMOOTH_INTERSECTION = 4;
-const int CSG_SMOOTH_DIFFERENCE = 5;
-const int CSG_POLY_SMOOTH_UNION = 6;
-const int CSG_POLY_SMOOTH_INTERSECTION = 7;
-const int CSG_POLY_SMOOTH_DIFFERENCE = 8;
-
-float combine(int op, float a, float b, float parameter)
-{
-    if (op == CSG_UNION)
-        return opUnion(a, b);
-    if (op == CSG_INTERSECTION)
-        return opIntersection(a, b);
-    if (op == CSG_DIFFERENCE)
-        return opDifference(a, b);
-    if (op == CSG_SMOOTH_UNION)
-        return opSmoothUnionExp(a, b, parameter);
-    if (op == CSG_SMOOTH_INTERSECTION)
-        return opSmoothIntersectionExp(a, b, parameter);
-    if (op == CSG_SMOOTH_DIFFERENCE)
-        return opSmoothDifferenceExp(a, b, parameter);
-    if (op == CSG_POLY_SMOOTH_UNION)
-        return opSmoothUnionPoly(a, b, parameter);
-    if (op == CSG_POLY_SMOOTH_INTERSECTION)
-        return opSmoothIntersectionPoly(a, b, parameter);
-    return opSmoothDifferencePoly(a, b, parameter);
 }
 
 // Leaving a frame maps the point back by the forward transform instead of keeping a stack

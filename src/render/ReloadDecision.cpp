@@ -24,6 +24,23 @@ bool anyChanged(const std::vector<fs::path>& files, const std::vector<fs::path>&
     });
 }
 
+// Generated code without its comment lines: the comments name objects' scene-file lines,
+// which an edit elsewhere in the file shifts without changing the code.
+std::string withoutCommentLines(const std::string& code)
+{
+    std::string kept;
+    std::size_t start = 0;
+    while (start < code.size()) {
+        std::size_t end = code.find('\n', start);
+        end = end == std::string::npos ? code.size() : end + 1;
+        const std::size_t first = code.find_first_not_of(' ', start);
+        if (!(first < end && code.compare(first, 2, "//") == 0))
+            kept.append(code, start, end - start);
+        start = end;
+    }
+    return kept;
+}
+
 // Beyond what decides a rebuild: the rest of the code, and the arrays of numbers the code
 // carries for upload (the general variant's shape programs, every shape's parameters).
 bool sameCodeAndArrays(const SceneShaderCode& a, const SceneShaderCode& b)
@@ -45,7 +62,8 @@ ReloadDecision decideReload(const SceneShaderCode& shownCode, const SceneUniform
     ReloadDecision decision;
     decision.rebuildShader = shownCode.variant != editedCode.variant ||
                              shownCode.defines != editedCode.defines ||
-                             shownCode.sceneFunctions != editedCode.sceneFunctions ||
+                             withoutCommentLines(shownCode.sceneFunctions) !=
+                                 withoutCommentLines(editedCode.sceneFunctions) ||
                              shownCode.userSdfFiles != editedCode.userSdfFiles ||
                              anyChanged(editedCode.userSdfFiles, changedFiles);
     decision.reloadTextures = shownUniforms.textureLayers != editedUniforms.textureLayers ||

@@ -1,4 +1,5 @@
 #pragma once
+#include "render/SceneShaderPlan.h"
 #include "scene/Scene.h"
 #include "scene/SceneFeatures.h"
 
@@ -42,7 +43,12 @@ struct SceneShaderCode {
     scene::SceneFeatures features;  // what the shader is built for
     std::string defines;            // lines for the preamble, after #version
     std::vector<std::filesystem::path> userSdfFiles;
-    std::string sceneFunctions;     // sceneDistance, sceneDistanceAndObject
+    // The specialised shader's decisions for each object, from which its scene functions
+    // are written (empty for the interpreted shapes).
+    ScenePlan plan;
+    // The scene's distance functions (each with a comment naming its object and scene-file
+    // line), sceneDistance, sceneDistanceAndObject and their culled forms.
+    std::string sceneFunctions;
     // --exact-geometry: rays find surfaces by exact intersection (exactSceneIntersect,
     // below) instead of sphere tracing.
     bool exactGeometry = false;

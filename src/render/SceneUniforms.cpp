@@ -15,27 +15,6 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-int materialCode(MaterialKind kind)
-{
-    switch (kind) {
-    case MaterialKind::Lambertian: return 0;
-    case MaterialKind::BlinnPhong: return 1;
-    case MaterialKind::Mirror: return 2;
-    case MaterialKind::Dielectric: return 3;
-    }
-    return 0;
-}
-
-int pigmentCode(PigmentKind kind)
-{
-    switch (kind) {
-    case PigmentKind::Solid: return 0;
-    case PigmentKind::Checker: return 1;
-    case PigmentKind::Texture: return 2;
-    }
-    return 0;
-}
-
 double average(const glm::dvec3& v)
 {
     return (v.x + v.y + v.z) / 3.0;
@@ -122,7 +101,7 @@ SceneUniforms packSceneUniforms(const Scene& scene, const SceneShaderCode& code)
             }
             layer = static_cast<float>(found->second);
         }
-        packed.pigments.emplace_back(static_cast<float>(pigmentCode(pigment.kind)), pigment.size,
+        packed.pigments.emplace_back(static_cast<float>(describe(pigment.kind).code), pigment.size,
                                      layer, 0.0f);
         packed.pigments.emplace_back(pigment.color, 0.0f);
         packed.pigments.emplace_back(pigment.secondColor, 0.0f);
@@ -130,7 +109,7 @@ SceneUniforms packSceneUniforms(const Scene& scene, const SceneShaderCode& code)
 
     for (const Finish& finish : scene.finishes) {
         packed.finishes.emplace_back(finish.emission, finish.phongExponent);
-        packed.finishes.emplace_back(static_cast<float>(materialCode(finish.material())),
+        packed.finishes.emplace_back(static_cast<float>(describe(finish.material()).code),
                                      finish.ior, 0.0f, 0.0f);
     }
 
@@ -204,8 +183,8 @@ void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
                 static_cast<float>(height));
 
     setInt(program, "uEnvironmentKind",
-           static_cast<int>(settings.environmentLight ? uniforms.environment.kind
-                                                      : EnvironmentKind::None));
+           describe(settings.environmentLight ? uniforms.environment.kind : EnvironmentKind::None)
+               .code);
     setVec3(program, "uEnvironmentColor", uniforms.environment.color);
 
     setFloat(program, "uMinimumHitDistance", uniforms.bounds.minimumHitDistance());

@@ -4,6 +4,7 @@
 #include "gl/GlError.h"
 #include "render/PathTracerProgram.h"
 #include "render/ShaderSource.h"
+#include "render/ToneCurve.h"
 
 #include <vector>
 
@@ -11,7 +12,7 @@ namespace render {
 
 ToneMapper::ToneMapper(const std::filesystem::path& shaderDirectory)
     : program_(fullscreenVertexSource(shaderDirectory),
-               "#version 330 core\n" +
+               "#version 330 core\n" + toneCurveDefines() +
                    readTextFile(shaderDirectory / "modules" / "tone_map.frag"),
                "the tone mapper")
 {

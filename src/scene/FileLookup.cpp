@@ -65,4 +65,12 @@ std::optional<fs::path> FileLookup::findUserSdf(const std::string& name) const
     return firstExisting(shaderFolders(), name + ".glsl");
 }
 
+std::string joinFolders(const std::vector<fs::path>& folders)
+{
+    std::string text;
+    for (const fs::path& folder : folders)
+        text += (text.empty() ? "" : ", ") + folder.string();
+    return text;
+}
+
 }  // namespace scene

@@ -30,4 +30,7 @@ private:
     std::filesystem::path dataDirectory_;
 };
 
+// "a, b, c": folders as a message names them.
+std::string joinFolders(const std::vector<std::filesystem::path>& folders);
+
 }  // namespace scene

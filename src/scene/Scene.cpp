@@ -52,11 +52,6 @@ glm::vec4 applyTransformToPlane(const Transform& transform, const glm::vec4& loc
     return glm::vec4(normal, transform.scale * localPlane.w - glm::dot(normal, transform.translation));
 }
 
-glm::vec3 skyRadiance(const glm::vec3& unitDirection)
-{
-    return 0.5f * glm::vec3(0.7f, 0.8f, 1.0f) * (1.0f - 0.5f * unitDirection.y);
-}
-
 std::vector<SphereLight> sphereLights(const Scene& scene)
 {
     std::vector<SphereLight> lights;

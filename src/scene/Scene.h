@@ -1,6 +1,10 @@
 #pragma once
 // The scene model: what a scene file means, in plain values. It knows nothing of OpenGL or
 // of how the renderer lays the scene out for the GPU (see render/SceneUniforms).
+#include "scene/CsgOperators.h"
+#include "scene/Environments.h"
+#include "scene/Materials.h"
+#include "scene/Pigments.h"
 #include "scene/Primitives.h"
 
 #include <glm/glm.hpp>
@@ -34,20 +38,6 @@ struct PointLight {
     glm::vec3 intensity{0.0f};  // radiant intensity I, W/sr per channel
 };
 
-enum class PigmentKind { Solid, Checker, Texture };
-
-struct Pigment {
-    PigmentKind kind = PigmentKind::Solid;
-    glm::vec3 color{1.0f};         // solid colour, or the checker's first colour
-    glm::vec3 secondColor{0.0f};   // checker only
-    float size = 1.0f;             // checker cube edge, or world units per texture tile
-    std::string textureName;       // texture only: as written in the file
-    std::filesystem::path texturePath;  // texture only: where it was found
-    int line = 0;                  // where the pigment is written, for messages
-};
-
-enum class MaterialKind { Lambertian, BlinnPhong, Mirror, Dielectric };
-
 struct Finish {
     glm::vec3 emission{0.0f};  // emitted radiance; only spheres may emit
     float phongExponent = 0.0f;
@@ -60,7 +50,7 @@ struct Finish {
     bool isEmissive() const;
 };
 
-// --- geometry: the primitives (scene/Primitives.h), user SDFs and CSG ----------------------
+// --- geometry: the primitives (scene/Primitives.h), user SDFs and CSG (scene/CsgOperators.h)
 
 // `float NAME(vec3 p, vec3 x)` from a GLSL file. The file may declare, in comment lines,
 //   // @bound R        every point of the surface lies within R of the position x
@@ -73,18 +63,6 @@ struct UserSdf {
     glm::vec3 position{0.0f};
     std::optional<float> boundingRadius;
     float lipschitz = 1.0f;
-};
-
-enum class CsgOperator {
-    Union,
-    Intersection,
-    Difference,
-    SmoothUnion,          // exponential smooth-min, parameter: sharpness k
-    SmoothIntersection,
-    SmoothDifference,
-    PolynomialSmoothUnion,  // polynomial smooth-min, parameter: blend radius
-    PolynomialSmoothIntersection,
-    PolynomialSmoothDifference,
 };
 
 struct Shape;
@@ -130,16 +108,6 @@ struct SceneObject {
     Shape shape;
     int line = 0;  // where the object starts in its file, for messages
 };
-
-enum class EnvironmentKind { None, Sky, Constant };
-
-struct Environment {
-    EnvironmentKind kind = EnvironmentKind::Sky;
-    glm::vec3 color{0.0f};  // Constant only
-};
-
-// The format's default sky, 0.5 * (0.7, 0.8, 1.0) * (1 - 0.5 * d.y).
-glm::vec3 skyRadiance(const glm::vec3& unitDirection);
 
 struct Scene {
     std::filesystem::path sourcePath;

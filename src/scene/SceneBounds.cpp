@@ -43,18 +43,15 @@ ShapeBound enclose(const std::vector<ShapeBound>& bounds, float margin)
 float smoothMargin(const CsgNode& node)
 {
     const float children = static_cast<float>(node.children.size());
-    switch (node.op) {
-    case CsgOperator::SmoothUnion:
-    case CsgOperator::SmoothIntersection:
-    case CsgOperator::SmoothDifference:
+    switch (describe(node.op).smoothing) {
+    case CsgSmoothing::Exponential:
         return std::log(children) / node.parameter;
-    case CsgOperator::PolynomialSmoothUnion:
-    case CsgOperator::PolynomialSmoothIntersection:
-    case CsgOperator::PolynomialSmoothDifference:
+    case CsgSmoothing::Polynomial:
         return 0.25f * node.parameter * (children - 1.0f);
-    default:
+    case CsgSmoothing::Sharp:
         return 0.0f;
     }
+    return 0.0f;
 }
 
 struct LocalBound {
@@ -76,15 +73,10 @@ struct LocalBound {
         std::vector<ShapeBound> children;
         for (const Shape& child : node.children)
             children.push_back(boundShape(child));
-        const bool subtractive = node.op == CsgOperator::Difference ||
-                                 node.op == CsgOperator::SmoothDifference ||
-                                 node.op == CsgOperator::PolynomialSmoothDifference;
-        const bool intersecting = node.op == CsgOperator::Intersection ||
-                                  node.op == CsgOperator::SmoothIntersection ||
-                                  node.op == CsgOperator::PolynomialSmoothIntersection;
-        if (subtractive)
+        const CsgCombination combination = describe(node.op).combination;
+        if (combination == CsgCombination::Difference)
             children.resize(1);
-        if (intersecting) {
+        if (combination == CsgCombination::Intersection) {
             // Any one finite child bounds an intersection; take the smallest.
             ShapeBound best;
             for (const ShapeBound& child : children)

@@ -18,7 +18,6 @@ struct ShapeFeatures {
     void operator()(const UserSdf& user) { features.userSdfs[user.name] = user.sourcePath; }
     void operator()(const CsgNode& node)
     {
-        features.csgOperators.insert(node.op);
         for (const Shape& child : node.children)
             visit(child);
     }
@@ -64,19 +63,11 @@ SceneFeatures SceneFeatures::everything(const Scene& scene)
 {
     SceneFeatures features;
     features.userSdfs = analyseFeatures(scene).userSdfs;
-    features.csgOperators = {CsgOperator::Union,
-                             CsgOperator::Intersection,
-                             CsgOperator::Difference,
-                             CsgOperator::SmoothUnion,
-                             CsgOperator::SmoothIntersection,
-                             CsgOperator::SmoothDifference,
-                             CsgOperator::PolynomialSmoothUnion,
-                             CsgOperator::PolynomialSmoothIntersection,
-                             CsgOperator::PolynomialSmoothDifference};
     features.transforms = true;
-    features.materials = {MaterialKind::Lambertian, MaterialKind::BlinnPhong, MaterialKind::Mirror,
-                          MaterialKind::Dielectric};
-    features.pigments = {PigmentKind::Solid, PigmentKind::Checker, PigmentKind::Texture};
+    for (const MaterialDescription& material : materialDescriptions())
+        features.materials.insert(material.kind);
+    for (const PigmentDescription& pigment : pigmentDescriptions())
+        features.pigments.insert(pigment.kind);
     features.nullInterfaces = true;
     features.pointLights = true;
     features.sphereLights = true;
@@ -94,7 +85,6 @@ std::string SceneFeatures::describe() const
         text << (it == userSdfs.begin() ? "" : ", ") << it->first << " (" << it->second.string()
              << ")";
     text << "\n";
-    text << "CSG operators: " << join(csgOperators) << "\n";
     text << "transforms:    " << (transforms ? "yes" : "no") << "\n";
     text << "materials:     " << join(materials) << "\n";
     text << "pigments:      " << join(pigments) << "\n";
@@ -112,49 +102,17 @@ std::string SceneFeatures::describe() const
 
 const char* toString(MaterialKind kind)
 {
-    switch (kind) {
-    case MaterialKind::Lambertian: return "lambertian";
-    case MaterialKind::BlinnPhong: return "blinn-phong";
-    case MaterialKind::Mirror: return "mirror";
-    case MaterialKind::Dielectric: return "dielectric";
-    }
-    return "?";
+    return describe(kind).name;
 }
 
 const char* toString(PigmentKind kind)
 {
-    switch (kind) {
-    case PigmentKind::Solid: return "solid";
-    case PigmentKind::Checker: return "checker";
-    case PigmentKind::Texture: return "texmap";
-    }
-    return "?";
-}
-
-const char* toString(CsgOperator op)
-{
-    switch (op) {
-    case CsgOperator::Union: return "union";
-    case CsgOperator::Intersection: return "intersection";
-    case CsgOperator::Difference: return "difference";
-    case CsgOperator::SmoothUnion: return "smooth_union exp";
-    case CsgOperator::SmoothIntersection: return "smooth_intersection exp";
-    case CsgOperator::SmoothDifference: return "smooth_difference exp";
-    case CsgOperator::PolynomialSmoothUnion: return "smooth_union poly";
-    case CsgOperator::PolynomialSmoothIntersection: return "smooth_intersection poly";
-    case CsgOperator::PolynomialSmoothDifference: return "smooth_difference poly";
-    }
-    return "?";
+    return describe(kind).keyword;
 }
 
 const char* toString(EnvironmentKind kind)
 {
-    switch (kind) {
-    case EnvironmentKind::None: return "none";
-    case EnvironmentKind::Sky: return "sky";
-    case EnvironmentKind::Constant: return "constant";
-    }
-    return "?";
+    return describe(kind).keyword;
 }
 
 }  // namespace scene

@@ -13,7 +13,6 @@ namespace scene {
 // no material.
 struct SceneFeatures {
     std::map<std::string, std::filesystem::path> userSdfs;  // name -> file
-    std::set<CsgOperator> csgOperators;
     bool transforms = false;
 
     std::set<MaterialKind> materials;
@@ -28,7 +27,6 @@ struct SceneFeatures {
 
     bool has(MaterialKind kind) const { return materials.count(kind) != 0; }
     bool has(PigmentKind kind) const { return pigments.count(kind) != 0; }
-    bool has(CsgOperator op) const { return csgOperators.count(op) != 0; }
 
     // Every feature the renderer has, with the user SDFs of `scene` (GLSL cannot call a
     // function it was not given): what the general, unspecialised shader is built for.
@@ -42,7 +40,6 @@ SceneFeatures analyseFeatures(const Scene& scene);
 
 const char* toString(MaterialKind kind);
 const char* toString(PigmentKind kind);
-const char* toString(CsgOperator op);
 const char* toString(EnvironmentKind kind);
 
 }  // namespace scene

@@ -28,9 +28,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::set<std::string> kCsgWords = {"union",          "intersection",
-                                         "difference",     "smooth_union",
-                                         "smooth_intersection", "smooth_difference"};
 const std::set<std::string> kTransformWords = {"translate", "rotate", "scale"};
 const std::set<std::string> kSectionKeywords = {"environment"};
 
@@ -59,14 +56,6 @@ bool isIdentifier(const std::string& word)
     });
     // GLSL reserves names starting with gl_ and any name containing a double underscore.
     return allWordCharacters && word.rfind("gl_", 0) != 0 && word.find("__") == std::string::npos;
-}
-
-std::string joinFolders(const std::vector<fs::path>& folders)
-{
-    std::string text;
-    for (const fs::path& folder : folders)
-        text += (text.empty() ? "" : ", ") + folder.string();
-    return text;
 }
 
 // Reads the `// @bound R` and `// @lipschitz L` declarations of a user SDF file.
@@ -155,17 +144,14 @@ private:
         const Token* token = peek();
         if (token == nullptr)
             fail(expected);
-        if (token->text == "none" || token->text == "black") {
+        const EnvironmentDescription* kind = findEnvironmentKind(token->text);
+        if (kind != nullptr)
             skip();
-            environment = {EnvironmentKind::None, glm::vec3(0.0f)};
-        } else if (token->text == "sky") {
-            skip();
-            environment = {EnvironmentKind::Sky, glm::vec3(0.0f)};
-        } else {
-            if (token->text == "constant")
-                skip();
-            environment = {EnvironmentKind::Constant, colour("environment radiance")};
-        }
+        else
+            // A colour alone is a constant environment: its word may be left out.
+            kind = &describe(EnvironmentKind::Constant);
+        environment = {kind->kind, kind->hasColour ? colour("environment radiance")
+                                                   : glm::vec3(0.0f)};
     }
 
     void parseCamera(Camera& camera)
@@ -214,30 +200,15 @@ private:
             const std::string which =
                 "pigment " + std::to_string(i) + " (" + std::to_string(i + 1) + " of " +
                 std::to_string(pigments) + ")";
-            const Token& kind = next("a pigment kind for " + which + ": solid, checker or texmap");
+            const std::string expected = "a pigment kind for " + which + ": " + pigmentKeywords();
+            const Token& word = next(expected);
+            const PigmentDescription* kind = findPigmentKind(word.text);
+            if (kind == nullptr)
+                failAt(word, expected);
             Pigment pigment;
-            pigment.line = kind.line;
-            if (kind.text == "solid") {
-                pigment.kind = PigmentKind::Solid;
-                pigment.color = colour(which + " colour");
-            } else if (kind.text == "checker") {
-                pigment.kind = PigmentKind::Checker;
-                pigment.color = colour(which + " first colour");
-                pigment.secondColor = colour(which + " second colour");
-                pigment.size = positiveNumber(which + " checker size");
-            } else if (kind.text == "texmap") {
-                pigment.kind = PigmentKind::Texture;
-                const Token& file = next("a texture file name for " + which);
-                pigment.textureName = file.text;
-                const auto found = lookup_.findTexture(file.text);
-                if (!found)
-                    failAt(file, "an existing texture file (looked in " +
-                                     joinFolders(lookup_.textureFolders()) + ")");
-                pigment.texturePath = *found;
-                pigment.size = positiveNumber(which + " texture scale");
-            } else {
-                failAt(kind, "a pigment kind for " + which + ": solid, checker or texmap");
-            }
+            pigment.kind = kind->kind;
+            pigment.line = word.line;
+            kind->read(*this, lookup_, which, pigment);
             scene.pigments.push_back(pigment);
         }
     }
@@ -294,13 +265,13 @@ private:
         const Token& type = next(expected);
         const std::string& word = type.text;
 
-        const bool nests = kTransformWords.count(word) != 0 || kCsgWords.count(word) != 0;
+        const bool nests = kTransformWords.count(word) != 0 || isCsgKeyword(word);
         if (nests && depth >= kMaxNestingDepth)
             failAt(type, "a primitive or user SDF: CSG blocks and transforms nest at most " +
                              std::to_string(kMaxNestingDepth) + " deep (" + which + ")");
         if (kTransformWords.count(word) != 0)
             return parseTransformed(type, which, depth + 1);
-        if (kCsgWords.count(word) != 0)
+        if (isCsgKeyword(word))
             return {parseCsg(type, which, depth + 1), std::nullopt};
         if (const PrimitiveKind* primitive = findPrimitiveKind(word))
             return {primitive->read(*this), std::nullopt};
@@ -345,32 +316,18 @@ private:
     {
         CsgNode node;
         const std::string& word = keyword.text;
-        if (word == "union") {
-            node.op = CsgOperator::Union;
-        } else if (word == "intersection") {
-            node.op = CsgOperator::Intersection;
-        } else if (word == "difference") {
-            node.op = CsgOperator::Difference;
+        if (const CsgOperatorDescription* sharp = findCsgOperator(word, "")) {
+            node.op = sharp->op;
         } else {
-            const Token& mode = next("a smooth-operator kind: exp (sharpness k) or poly (radius)");
-            bool exponential = true;
-            if (mode.text == "exp")
-                exponential = true;
-            else if (mode.text == "poly")
-                exponential = false;
-            else
-                failAt(mode, "a smooth-operator kind: exp (sharpness k) or poly (radius)");
-            if (word == "smooth_union")
-                node.op = exponential ? CsgOperator::SmoothUnion
-                                      : CsgOperator::PolynomialSmoothUnion;
-            else if (word == "smooth_intersection")
-                node.op = exponential ? CsgOperator::SmoothIntersection
-                                      : CsgOperator::PolynomialSmoothIntersection;
-            else
-                node.op = exponential ? CsgOperator::SmoothDifference
-                                      : CsgOperator::PolynomialSmoothDifference;
-            node.parameter = exponential ? positiveNumber("smooth-min sharpness k")
-                                         : numberAtLeast("smooth-min blend radius", 0.0f);
+            const std::string expected = "a smooth-operator kind: exp (sharpness k) or poly (radius)";
+            const Token& mode = next(expected);
+            const CsgOperatorDescription* smooth = findCsgOperator(word, mode.text);
+            if (smooth == nullptr)
+                failAt(mode, expected);
+            node.op = smooth->op;
+            node.parameter = smooth->smoothing == CsgSmoothing::Exponential
+                                 ? positiveNumber("smooth-min sharpness k")
+                                 : numberAtLeast("smooth-min blend radius", 0.0f);
         }
         expectWord("{");
         while (const Token* token = peek()) {
@@ -395,7 +352,7 @@ private:
 
 bool isReservedShapeWord(const std::string& word)
 {
-    return kCsgWords.count(word) != 0 || kTransformWords.count(word) != 0 ||
+    return isCsgKeyword(word) || kTransformWords.count(word) != 0 ||
            findPrimitiveKind(word) != nullptr;
 }
 

@@ -10,8 +10,9 @@ namespace {
 // floor and fills the middle of the view. A camera ray that meets it carries 3e38 at once;
 // its path then scatters off the light's own white surface onto the floor a hair below,
 // where light sampling sees the sphere fill half the sky and adds about 1e38 more: the
-// path's sum overflows to infinity in float arithmetic. Radius 0.1 keeps the light's power
-// (4 pi^2 r^2 L = 1.2e38), which the host computes in float for light selection, finite.
+// path's sum overflows to infinity in float arithmetic. (The light's power, 4 pi^2 r^2 L =
+// 1.2e38, is computed in double for light selection, render/SceneUniforms.cpp: it would stay
+// finite at any radius.)
 TEST(DiscardedSamples, OverflowingSamplesAreCountedAndEveryPixelStaysFinite)
 {
     hard::RenderRequest request;

@@ -1,8 +1,8 @@
-// generateSceneShaderCode: the per-ray culling it builds for a scene (ray_culling.glsl), and
-// the polyhedra it leaves out of marches for exact intersection.
+// generateSceneShaderCode: the per-ray culling it plans for a scene (ray_culling.glsl), the
+// objects it leaves out of marches for exact intersection, and the kinds' codes it defines.
 // Which bounds a scene's pieces get, and what numbers stand for them, is structure the host
-// decides; whether the rays then meet the same surfaces is tested by rendering
-// (RayCullingTest.cpp).
+// decides, read here from the plan (render/SceneShaderPlan.h); whether the rays then meet
+// the same surfaces is tested by rendering (RayCullingTest.cpp).
 #include "render/SceneShaderGenerator.h"
 #include "scene/SceneTestSupport.h"
 
@@ -32,15 +32,22 @@ int occurrences(const std::string& text, const std::string& pattern)
         std::sregex_iterator(text.begin(), text.end(), expression), std::sregex_iterator()));
 }
 
-// The uShapeParameters value a culling call reads, e.g. for "cullByBall(culling, 2u, ...".
-glm::vec4 culledBound(const SceneShaderCode& code, const std::string& call, unsigned bit)
+// The bounding ball or half-space that stands for culling bit `bit` in the plan.
+glm::vec4 culledBound(const SceneShaderCode& code, bool halfSpace, unsigned bit)
 {
-    const std::regex expression(call + R"(\(culling, )" + std::to_string(bit) +
-                                R"(u, uShapeParameters\[(\d+)\])");
-    std::smatch match;
-    if (!std::regex_search(code.sceneFunctions, match, expression))
-        throw std::runtime_error(call + " with bit " + std::to_string(bit) + " not generated");
-    return code.shapeParameters.at(std::stoul(match[1]));
+    for (const render::ObjectPlan& object : code.plan.objects)
+        if (object.culling && object.culling->bit == bit && object.culling->halfSpace == halfSpace)
+            return code.shapeParameters.at(object.culling->slot);
+    throw std::runtime_error(std::string(halfSpace ? "a half-space" : "a ball") + " with bit " +
+                             std::to_string(bit) + " not planned");
+}
+
+int culledObjects(const SceneShaderCode& code, bool halfSpace)
+{
+    int count = 0;
+    for (const render::ObjectPlan& object : code.plan.objects)
+        count += object.culling && object.culling->halfSpace == halfSpace ? 1 : 0;
+    return count;
 }
 
 void expectNear(const glm::vec4& actual, const glm::vec4& expected)
@@ -49,16 +56,13 @@ void expectNear(const glm::vec4& actual, const glm::vec4& expected)
         EXPECT_NEAR(actual[i], expected[i], 1e-5f) << "component " << i;
 }
 
-// The values the k-th clipOutsideHalfSpace call of exactSurfacesIntersect reads.
+// The planes the exact intersection clips by, in object order.
 std::vector<glm::vec4> exactClipPlanes(const SceneShaderCode& code)
 {
-    const std::regex expression(
-        R"(clipOutsideHalfSpace\(outside, origin, direction, uShapeParameters\[(\d+)\]\))");
     std::vector<glm::vec4> planes;
-    for (std::sregex_iterator it(code.sceneFunctions.begin(), code.sceneFunctions.end(),
-                                 expression);
-         it != std::sregex_iterator(); ++it)
-        planes.push_back(code.shapeParameters.at(std::stoul((*it)[1])));
+    for (const render::ObjectPlan& object : code.plan.objects)
+        for (const int slot : object.exactPlaneSlots)
+            planes.push_back(code.shapeParameters.at(slot));
     return planes;
 }
 
@@ -81,7 +85,9 @@ TEST(RayCulling, PolyhedraAreMetByExactIntersectionInsteadOfMarched)
     expectNear(planes[0], {0, 1, 0, 2});
     expectNear(planes[1], {1, 0, 0, 4});
     expectNear(planes[2], {0, 0, -1, 3});
-    EXPECT_EQ(occurrences(code.sceneFunctions, R"(cullByHalfSpace\()"), 0)
+    ASSERT_EQ(code.plan.objects.size(), 1u);
+    EXPECT_TRUE(code.plan.objects[0].exact);
+    EXPECT_FALSE(code.plan.objects[0].culling)
         << "a polyhedron needs no culling bits: marches leave it out";
     EXPECT_EQ(occurrences(functionBody(code.sceneFunctions, "float sceneDistanceCulled("),
                           R"(shape0\(p\))"),
@@ -98,20 +104,18 @@ TEST(RayCulling, FiniteObjectsAreCulledByTheirBoundingBalls)
     const SceneShaderCode code = specialized("0 0 box 0 0 0  1 2 2\n"
                                              "0 0 torus 0 1 0  2 0.5\n",
                                              2);
-    EXPECT_EQ(occurrences(code.sceneFunctions, R"(cullByBall\()"), 2);
-    expectNear(culledBound(code, "cullByBall", 1), {0, 0, 0, 3});
-    expectNear(culledBound(code, "cullByBall", 2), {0, 1, 0, 2.5f});
+    EXPECT_EQ(culledObjects(code, false), 2);
+    expectNear(culledBound(code, false, 1), {0, 0, 0, 3});
+    expectNear(culledBound(code, false, 2), {0, 1, 0, 2.5f});
 }
 
-// The uShapeParameters values the exactSphere calls of exactSurfacesIntersect read.
+// The spheres the exact intersection meets, in object order.
 std::vector<glm::vec4> exactSpheres(const SceneShaderCode& code)
 {
-    const std::regex expression(R"(exactSphere\(origin, direction, uShapeParameters\[(\d+)\])");
     std::vector<glm::vec4> spheres;
-    for (std::sregex_iterator it(code.sceneFunctions.begin(), code.sceneFunctions.end(),
-                                 expression);
-         it != std::sregex_iterator(); ++it)
-        spheres.push_back(code.shapeParameters.at(std::stoul((*it)[1])));
+    for (const render::ObjectPlan& object : code.plan.objects)
+        if (object.exactSphereSlot >= 0)
+            spheres.push_back(code.shapeParameters.at(object.exactSphereSlot));
     return spheres;
 }
 
@@ -123,10 +127,8 @@ TEST(RayCulling, SpheresAreMetByExactIntersectionInsteadOfMarched)
     ASSERT_EQ(spheres.size(), 2u);
     expectNear(spheres[0], {1, 2, 3, 0.5f});
     expectNear(spheres[1], {1, 2, 0, 0.5f});  // in world space
-    EXPECT_EQ(occurrences(code.sceneFunctions, R"(cullByBall\()"), 0);
-    EXPECT_EQ(occurrences(functionBody(code.sceneFunctions, "float sceneDistanceCulled("),
-                          R"(shape[01]\(p\))"),
-              0)
+    EXPECT_EQ(culledObjects(code, false), 0);
+    EXPECT_TRUE(code.plan.objects.at(0).exact && code.plan.objects.at(1).exact)
         << "the marched distance leaves the spheres out";
     EXPECT_FALSE(code.marchesAnything) << "nothing is left to march";
     EXPECT_NE(code.defines.find("#define HAS_MARCHED_OBJECTS 0"), std::string::npos);
@@ -144,10 +146,10 @@ TEST(RayCulling, ConeIsCulledByTheHalfSpaceOnTheFarSideOfItsApex)
     // Opening downwards below its apex at y = 2; its distance bound grows at b / |(a, b)| of
     // the height above the apex.
     const SceneShaderCode down = specialized("0 0 cone 0 2 0  3 4\n", 1);
-    expectNear(culledBound(down, "cullByHalfSpace", 1), {0, 0.8f, 0, -1.6f});
+    expectNear(culledBound(down, true, 1), {0, 0.8f, 0, -1.6f});
     // Opening upwards (b < 0) above it.
     const SceneShaderCode up = specialized("0 0 cone 0 2 0  3 -4\n", 1);
-    expectNear(culledBound(up, "cullByHalfSpace", 1), {0, -0.8f, 0, 1.6f});
+    expectNear(culledBound(up, true, 1), {0, -0.8f, 0, 1.6f});
 }
 
 TEST(RayCulling, TransformedPolyhedronIsMetByItsPlanesInWorldSpace)
@@ -169,8 +171,10 @@ TEST(RayCulling, ObjectsWithoutABoundMakeEveryRayMarchToTheFarDistance)
                                              "  polyhedron 1  1 0 0 0\n"
                                              "}\n",
                                              1);
-    EXPECT_EQ(occurrences(code.sceneFunctions, R"(cull(ByBall|ByHalfSpace)\()"), 0);
-    EXPECT_EQ(occurrences(code.sceneFunctions, R"(escapeDistance = FLOAT_MAX)"), 1);
+    EXPECT_EQ(culledObjects(code, false) + culledObjects(code, true), 0);
+    EXPECT_FALSE(code.plan.everyObjectCulled);
+    EXPECT_EQ(occurrences(code.sceneFunctions, R"(escapeDistance = FLOAT_MAX)"), 1)
+        << "the plan's decision is written into sceneRayCulling";
 }
 
 TEST(RayCulling, PiecesBeyondThirtyTwoAreNeverCulled)
@@ -179,9 +183,8 @@ TEST(RayCulling, PiecesBeyondThirtyTwoAreNeverCulled)
     for (int i = 0; i < 40; ++i)
         objects += "0 0 box " + std::to_string(3 * i) + " 0 0  1 1 1\n";
     const SceneShaderCode code = specialized(objects, 40);
-    EXPECT_EQ(occurrences(code.sceneFunctions, R"(cullByBall\()"), 32);
-    EXPECT_EQ(occurrences(code.sceneFunctions, R"(escapeDistance = FLOAT_MAX)"), 1)
-        << "boxes without a bit may be met anywhere";
+    EXPECT_EQ(culledObjects(code, false), 32);
+    EXPECT_FALSE(code.plan.everyObjectCulled) << "boxes without a bit may be met anywhere";
 }
 
 TEST(RayCulling, EditingAValueChangesOnlyUniforms)
@@ -199,12 +202,90 @@ TEST(RayCulling, EditingAValueChangesOnlyUniforms)
     EXPECT_NE(before.shapeParameters, after.shapeParameters);
 }
 
+TEST(ScenePlan, EachObjectsFunctionNamesItsObjectAndSceneFileLine)
+{
+    const SceneShaderCode code = specialized("0 0 sphere 0 0 0 1\n"
+                                             "0 0 union { box 0 0 0 1 1 1\n"
+                                             "  torus 0 0 0 1 0.25 }\n",
+                                             2);
+    ASSERT_EQ(code.plan.objects.size(), 2u);
+    // sceneWithObjects writes the objects from line 13 on.
+    EXPECT_EQ(code.plan.objects[0].line, 13);
+    EXPECT_EQ(code.plan.objects[1].line, 14);
+    for (const render::ObjectPlan& object : code.plan.objects) {
+        const std::string comment = "// object " + std::to_string(object.object) + ", " +
+                                    kFileName + ":" + std::to_string(object.line) + ": ";
+        const std::size_t function = code.sceneFunctions.find("float " + object.function + "(");
+        ASSERT_NE(function, std::string::npos) << object.function;
+        EXPECT_EQ(code.sceneFunctions.rfind(comment, function),
+                  code.sceneFunctions.rfind("\n//", function) + 1)
+            << object.function << " is not under \"" << comment << "...\"";
+    }
+    EXPECT_NE(code.sceneFunctions.find(kFileName + ":14: union"), std::string::npos);
+}
+
 TEST(RayCulling, GeneralShaderCullsNothing)
 {
     const SceneShaderCode code =
         generateSceneShaderCode(parse(sceneWithObjects(1, "0 0 sphere 0 0 0 1\n")),
                                 {ShaderVariant::General});
     EXPECT_EQ(occurrences(code.sceneFunctions, R"(cull(ByBall|ByHalfSpace)\()"), 0);
+}
+
+}  // namespace
+}  // namespace scene_tests
+
+namespace scene_tests {
+namespace {
+
+// Every kind's code reaches every shader as a #define, with the value the host packs, and
+// every kind's feature switch is defined (0 or 1).
+TEST(KindCodesInTheShader, EveryKindHasItsDefineAndEverySwitchIsSet)
+{
+    const scene::Scene scene = parse(sceneWithObjects(1, "0 0 sphere 0 0 0 1"));
+    for (const ShaderVariant variant : {ShaderVariant::Specialized, ShaderVariant::General}) {
+        const SceneShaderCode code = generateSceneShaderCode(scene, {variant});
+        auto defines = [&](const std::string& name, int value) {
+            return code.defines.find("#define " + name + " " + std::to_string(value) + "\n") !=
+                   std::string::npos;
+        };
+        for (const auto& op : scene::csgOperatorDescriptions())
+            EXPECT_TRUE(defines(scene::codeName(op), op.code)) << scene::codeName(op);
+        for (const auto& material : scene::materialDescriptions()) {
+            EXPECT_TRUE(defines(scene::codeName(material), material.code))
+                << scene::codeName(material);
+            if (material.featureSwitch != nullptr)
+                EXPECT_NE(code.defines.find(std::string("#define ") + material.featureSwitch),
+                          std::string::npos)
+                    << material.featureSwitch;
+        }
+        for (const auto& pigment : scene::pigmentDescriptions()) {
+            EXPECT_TRUE(defines(scene::codeName(pigment), pigment.code))
+                << scene::codeName(pigment);
+            if (pigment.featureSwitch != nullptr)
+                EXPECT_NE(code.defines.find(std::string("#define ") + pigment.featureSwitch),
+                          std::string::npos)
+                    << pigment.featureSwitch;
+        }
+        for (const auto& environment : scene::environmentDescriptions())
+            EXPECT_TRUE(defines(scene::codeName(environment), environment.code))
+                << scene::codeName(environment);
+    }
+}
+
+TEST(KindCodesInTheShader, TheGeneralShaderCombinesByEveryOperatorsCode)
+{
+    const SceneShaderCode code = generateSceneShaderCode(
+        parse(sceneWithObjects(1, "0 0 sphere 0 0 0 1")), {ShaderVariant::General});
+    const auto& operators = scene::csgOperatorDescriptions();
+    // The last operator is combine's fallthrough; every other one has its branch.
+    for (std::size_t i = 0; i + 1 < operators.size(); ++i)
+        EXPECT_NE(code.sceneFunctions.find("if (op == " + scene::codeName(operators[i]) +
+                                           ")\n        return " + operators[i].function),
+                  std::string::npos)
+            << operators[i].identifier;
+    EXPECT_NE(code.sceneFunctions.find(std::string("    return ") + operators.back().function),
+              std::string::npos);
 }
 
 }  // namespace

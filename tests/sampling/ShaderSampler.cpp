@@ -5,6 +5,7 @@
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
 #include "render/PathTracerProgram.h"
+#include "render/ShaderCodes.h"
 #include "render/ShaderSource.h"
 #include "support/TestPaths.h"
 
@@ -19,13 +20,14 @@ render::ShaderSource probeSource()
     const auto shaders = testing_support::sourceDirectory() / "shaders";
     render::ShaderSource source;
     // What the modules expect the scene's preamble to define: only Blinn-Phong among the
-    // materials, and one element in each scene array (unused here).
+    // materials, one element in each scene array (unused here), and the kinds' codes.
     source.add("<preamble: the sampling probe>",
                "#version 330 core\n"
                "#define HAS_BLINN_PHONG 1\n#define HAS_MIRROR 0\n#define HAS_DIELECTRIC 0\n"
                "#define SHAPE_PARAMETER_ARRAY_SIZE 1\n#define OBJECT_ARRAY_SIZE 1\n"
                "#define PIGMENT_ARRAY_SIZE 1\n#define FINISH_ARRAY_SIZE 1\n"
-               "#define LIGHT_ARRAY_SIZE 1\n");
+               "#define LIGHT_ARRAY_SIZE 1\n" +
+                   render::shaderCodeDefines());
     for (const char* module :
          {"constants.glsl", "rng.glsl", "sampler.glsl", "sampling.glsl", "scene_data.glsl", "fresnel.glsl",
           "materials.glsl"})

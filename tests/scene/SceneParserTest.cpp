@@ -293,13 +293,6 @@ TEST(SceneFormat, DefaultEnvironmentIsTheSky)
     EXPECT_EQ(parse(kEveryObjectType).environment.kind, EnvironmentKind::Sky);
 }
 
-TEST(SceneFormat, SkyRadianceIsTheFormatsGradient)
-{
-    EXPECT_TRUE(near(skyRadiance({0.0f, 1.0f, 0.0f}), 0.25f * glm::vec3(0.7f, 0.8f, 1.0f)));
-    EXPECT_TRUE(near(skyRadiance({0.0f, -1.0f, 0.0f}), 0.75f * glm::vec3(0.7f, 0.8f, 1.0f)));
-    EXPECT_TRUE(near(skyRadiance({1.0f, 0.0f, 0.0f}), 0.5f * glm::vec3(0.7f, 0.8f, 1.0f)));
-}
-
 TEST(SceneFormat, OnlyEmissiveSpheresAreSphereLights)
 {
     const Scene scene = parse(sceneWithObjects(3,

@@ -1,0 +1,65 @@
+#pragma once
+// The specialised shader's plan for a scene, computed before any of the scene's union is
+// written (render/SpecializedSceneCode.h writes it): for each object, its distance function,
+// whether rays meet it exactly instead of marching it, the bounding sphere it is skipped
+// by, and the piece of the ray's culling mask that stands for it, each with the parameter
+// slots it reads. Tests assert on the plan rather than on the GLSL text.
+#include "render/ShapeCompiler.h"
+#include "scene/Scene.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace render {
+
+// A part of the scene's union that a ray is tested against before it is marched
+// (shaders/modules/ray_culling.glsl): a bounding half-space or ball in uShapeParameters, and
+// the bit that stands for it in the ray's mask.
+struct CullingPiece {
+    bool halfSpace = false;
+    int slot = -1;
+    std::uint32_t bit = 0;
+};
+
+// The ray's mask has this many bits; objects beyond them are never culled.
+constexpr int kCullingBits = 32;
+
+struct ObjectPlan {
+    std::size_t object = 0;  // in the scene the shader is built for
+    int line = 0;            // where the object starts in its scene file
+    std::string function;    // its generated distance function
+    // Met by exact intersection (exactSurfacesIntersect): a top-level sphere that is not a
+    // culled light, or a polyhedron. In the full distance forms, which every point query
+    // uses; left out of the culled forms, which rays march.
+    bool exact = false;
+    int exactSphereSlot = -1;          // the sphere in world space: centre, radius
+    std::vector<int> exactPlaneSlots;  // the polyhedron's planes in world space, unit normals
+    // An expensive object with a bounding sphere: evaluated only where that sphere is nearer
+    // than what is already known, after every cheap object. -1: evaluated everywhere.
+    int boundSlot = -1;
+    std::optional<CullingPiece> culling;  // none: never left out of a march
+};
+
+struct ScenePlan {
+    std::vector<ObjectPlan> objects;  // in object order
+    // Every marched object has a culling piece, so a ray that misses them all escapes.
+    bool everyObjectCulled = true;
+    // Some ray marches some object (false where every object is met exactly).
+    bool marchesAnything = true;
+    // Per object: its culling bit, or 0.
+    std::vector<std::uint32_t> objectCullingBits;
+};
+
+// Objects whose distance is expensive (user SDFs, CSG solids) and that have a bounding
+// sphere are evaluated only where that sphere is nearer than everything known so far: the
+// exact distance is never below the sphere's, so the skipped evaluation could not have been
+// the minimum. Nothing is approximated. (Both shaders.)
+bool worthBounding(const scene::SceneObject& object);
+
+// Plans the scene's objects, emitting their distance functions into `compiler` and laying
+// out every value the plan names in its parameter array.
+ScenePlan planScene(const scene::Scene& scene, ShapeCompiler& compiler);
+
+}  // namespace render
