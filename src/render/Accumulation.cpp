@@ -12,6 +12,17 @@ Accumulation::Accumulation(int width, int height)
 {
 }
 
+double Accumulation::sampleVariance(int x, int y) const
+{
+    const double kept = samplesKept(x, y);
+    if (!(kept >= 2.0))
+        return 0.0;
+    const double sumSquares = (static_cast<double>(moments.at(x, y, 0)) + moments.at(x, y, 1) +
+                               moments.at(x, y, 2)) /
+                              3.0;
+    return std::max(0.0, sumSquares / (kept - 1.0));
+}
+
 Accumulation combineAccumulations(const std::vector<const Accumulation*>& parts)
 {
     if (parts.empty())

@@ -7,20 +7,6 @@ namespace render {
 
 namespace {
 
-// The standard deviation of one sample, channel-averaged variance; 0 where fewer than two
-// samples were kept.
-double sampleDeviation(const Accumulation& accumulation, int x, int y)
-{
-    const double kept = accumulation.samplesKept(x, y);
-    if (!(kept >= 2.0))
-        return 0.0;
-    const io::Image& moments = accumulation.moments;
-    const double sumSquares =
-        (static_cast<double>(moments.at(x, y, 0)) + moments.at(x, y, 1) + moments.at(x, y, 2)) /
-        3.0;
-    return std::sqrt(std::max(0.0, sumSquares / (kept - 1.0)));
-}
-
 double channelMeanRadiance(const Accumulation& accumulation)
 {
     double sum = 0.0;
@@ -56,7 +42,7 @@ AdaptivePlan planAdaptiveSampling(const Accumulation& accumulation,
     double deviationSum = 0.0;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x)
-            deviationSum += sampleDeviation(accumulation, x, y);
+            deviationSum += std::sqrt(accumulation.sampleVariance(x, y));
     const double pixels = std::max(1.0, static_cast<double>(width) * height);
     const double targetVariance = std::pow(sampling.targetError * channelMeanRadiance(accumulation), 2);
     // n_p = s_p * mean(s) / targetVariance (AdaptiveSampling.h); a black image needs the
@@ -72,7 +58,7 @@ AdaptivePlan planAdaptiveSampling(const Accumulation& accumulation,
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const double wanted =
-                limited(std::ceil(sampleDeviation(accumulation, x, y) * samplesPerDeviation),
+                limited(std::ceil(std::sqrt(accumulation.sampleVariance(x, y)) * samplesPerDeviation),
                         sampling.sampleLimit);
             float& tile = targets.samples[tileOf(x, y)];
             // Beyond what a float counts exactly, the count would not grow.

@@ -7,17 +7,11 @@ namespace render {
 
 namespace {
 
-// The variance of the pixel's mean, channel-averaged; negative where it is not known.
+// The variance of the pixel's mean; negative where it is not known.
 double varianceOfMean(const Accumulation& accumulation, int x, int y)
 {
     const double kept = accumulation.samplesKept(x, y);
-    if (!(kept >= 2.0))
-        return -1.0;
-    const io::Image& moments = accumulation.moments;
-    const double sumSquares =
-        (static_cast<double>(moments.at(x, y, 0)) + moments.at(x, y, 1) + moments.at(x, y, 2)) /
-        3.0;
-    return sumSquares / (kept * (kept - 1.0));
+    return kept >= 2.0 ? accumulation.sampleVariance(x, y) / kept : -1.0;
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 // accumulations whose noise is known.
 #include "render/AdaptiveSampling.h"
 
+#include "interaction/AccumulationBuilders.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,28 +11,16 @@
 namespace interaction_tests {
 namespace {
 
-// Every pixel: `samples` samples kept of mean `radiance`, each sample's standard deviation
-// `deviation` (all channels).
+// Every pixel as accumulationOf, each sample's standard deviation `deviation`.
 render::Accumulation noisyAccumulation(int width, int height, float radiance, float samples,
                                        float deviation)
 {
-    render::Accumulation accumulation(width, height);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            for (int c = 0; c < 3; ++c) {
-                accumulation.estimate.at(x, y, c) = radiance;
-                accumulation.moments.at(x, y, c) = deviation * deviation * (samples - 1.0f);
-            }
-            accumulation.estimate.at(x, y, 3) = samples;
-        }
-    return accumulation;
+    return accumulationOf(width, height, radiance, samples, deviation * deviation);
 }
 
 void setDeviation(render::Accumulation& accumulation, int x, int y, float deviation)
 {
-    const float n = accumulation.samplesKept(x, y);
-    for (int c = 0; c < 3; ++c)
-        accumulation.moments.at(x, y, c) = deviation * deviation * (n - 1.0f);
+    setSampleVariance(accumulation, x, y, deviation * deviation);
 }
 
 float tileTarget(const render::AdaptivePlan& plan, int column, int row)

@@ -2,6 +2,8 @@
 // variance of the mean, and its uncertainty, on accumulations whose answer is known.
 #include "render/ConvergenceEstimate.h"
 
+#include "interaction/AccumulationBuilders.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,29 +12,16 @@
 namespace interaction_tests {
 namespace {
 
-// Every pixel: `samples` samples kept of mean `radiance` (all channels), and second moments
-// making its variance of the mean `varianceOfMean`.
+// Every pixel as accumulationOf, its variance of the mean s^2 / n `varianceOfMean`.
 render::Accumulation uniformAccumulation(int width, int height, float radiance, float samples,
                                          float varianceOfMean)
 {
-    render::Accumulation accumulation(width, height);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x)
-            for (int c = 0; c < 3; ++c) {
-                accumulation.estimate.at(x, y, c) = radiance;
-                accumulation.moments.at(x, y, c) = varianceOfMean * samples * (samples - 1.0f);
-            }
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x)
-            accumulation.estimate.at(x, y, 3) = samples;
-    return accumulation;
+    return accumulationOf(width, height, radiance, samples, varianceOfMean * samples);
 }
 
 void setVarianceOfMean(render::Accumulation& accumulation, int x, int y, float varianceOfMean)
 {
-    const float n = accumulation.samplesKept(x, y);
-    for (int c = 0; c < 3; ++c)
-        accumulation.moments.at(x, y, c) = varianceOfMean * n * (n - 1.0f);
+    setSampleVariance(accumulation, x, y, varianceOfMean * accumulation.samplesKept(x, y));
 }
 
 TEST(RelativeErrorEstimate, IsTheRootMeanVarianceOverTheMeanRadiance)

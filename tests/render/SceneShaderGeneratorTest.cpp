@@ -254,18 +254,20 @@ TEST(KindCodesInTheShader, EveryKindHasItsDefineAndEverySwitchIsSet)
         for (const auto& material : scene::materialDescriptions()) {
             EXPECT_TRUE(defines(scene::codeName(material), material.code))
                 << scene::codeName(material);
-            if (material.featureSwitch != nullptr)
+            if (material.featureSwitch != nullptr) {
                 EXPECT_NE(code.defines.find(std::string("#define ") + material.featureSwitch),
                           std::string::npos)
                     << material.featureSwitch;
+            }
         }
         for (const auto& pigment : scene::pigmentDescriptions()) {
             EXPECT_TRUE(defines(scene::codeName(pigment), pigment.code))
                 << scene::codeName(pigment);
-            if (pigment.featureSwitch != nullptr)
+            if (pigment.featureSwitch != nullptr) {
                 EXPECT_NE(code.defines.find(std::string("#define ") + pigment.featureSwitch),
                           std::string::npos)
                     << pigment.featureSwitch;
+            }
         }
         for (const auto& environment : scene::environmentDescriptions())
             EXPECT_TRUE(defines(scene::codeName(environment), environment.code))
