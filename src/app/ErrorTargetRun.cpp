@@ -28,9 +28,9 @@ void ErrorTargetRun::start(render::ProgressiveRenderer& renderer)
                 .targets);
 }
 
-void ErrorTargetRun::afterFrame(render::ProgressiveRenderer& renderer, double elapsedSeconds)
+// Estimates the error `accumulation` holds; true when every pixel holds the minimum.
+bool ErrorTargetRun::judge(const render::Accumulation& accumulation)
 {
-    const render::Accumulation accumulation = renderer.accumulation();
     estimate_ = render::estimateRelativeError(accumulation);
     const render::SampleCountSpan span = render::samplesTakenSpan(accumulation);
     const bool minimumHeld = span.fewest >= std::min(sampling_.minimumSamples,
@@ -38,6 +38,18 @@ void ErrorTargetRun::afterFrame(render::ProgressiveRenderer& renderer, double el
                                                          ? sampling_.sampleLimit
                                                          : sampling_.minimumSamples);
     reached_ = minimumHeld && estimate_ && estimate_->upperBound() <= sampling_.targetError;
+    return minimumHeld;
+}
+
+void ErrorTargetRun::conclude(const render::ProgressiveRenderer& renderer)
+{
+    judge(renderer.accumulation());
+}
+
+void ErrorTargetRun::afterFrame(render::ProgressiveRenderer& renderer, double elapsedSeconds)
+{
+    const render::Accumulation accumulation = renderer.accumulation();
+    const bool minimumHeld = judge(accumulation);
 
     if (estimate_ && !reached_) {
         render::AdaptiveSampling aim = sampling_;

@@ -21,6 +21,10 @@ public:
     // After each frame, `elapsedSeconds` into the render.
     void afterFrame(render::ProgressiveRenderer& renderer, double elapsedSeconds);
 
+    // After the last frame, for the summary: the estimate of what the render holds (a window
+    // renders without afterFrame).
+    void conclude(const render::ProgressiveRenderer& renderer);
+
     // Every pixel holds the minimum and the estimate, two standard deviations up, is at most
     // the target.
     bool reached() const { return reached_; }
@@ -41,6 +45,8 @@ public:
     std::string summaryText(const std::string& stop) const;
 
 private:
+    bool judge(const render::Accumulation& accumulation);
+
     render::AdaptiveSampling sampling_;
     bool adaptive_;
     std::optional<render::ErrorEstimate> estimate_;

@@ -157,9 +157,10 @@ int runRender(const CommandLine& commandLine)
     // The window's panel switches the environment off without a recompile.
     settings.switchableEnvironment = context->hasWindow();
     render::ProgressiveRenderer renderer(scene, line.width, line.height, settings);
+    // A window samples every pixel alike (InteractiveSession).
     std::optional<ErrorTargetRun> errorTarget;
     if (line.targetError)
-        errorTarget.emplace(line.adaptiveSampling, !line.uniformSampling);
+        errorTarget.emplace(line.adaptiveSampling, !line.uniformSampling && !context->hasWindow());
     int samplesResumed = 0;
     int fewestResumed = 0;
     if (resumed) {
@@ -305,8 +306,10 @@ int runRender(const CommandLine& commandLine)
 
     if (interrupted)
         summary += " (interrupted)";
-    if (errorTarget)
+    if (errorTarget) {
+        errorTarget->conclude(renderer);
         summary += "; " + errorTarget->summaryText(targetStop(line, *errorTarget, interrupted));
+    }
     std::cout << summary << std::endl;
     return interrupted ? kExitInterrupted : kExitSuccess;
 }

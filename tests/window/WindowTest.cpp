@@ -67,5 +67,29 @@ TEST(WindowPicture, MatchesTheHeadlessPictureOfTheSameSeed)
         << pixel % fromWindow.width << ", " << pixel / fromWindow.width << ")";
 }
 
+// A window given --target-error ends once the estimate gets there, sampling every pixel
+// alike, and its summary says so, before the time limit.
+TEST(WindowTargetError, EndsAtTheTargetAndSaysSo)
+{
+    ASSERT_NE(std::getenv("DISPLAY"), nullptr)
+        << "run this test through run-under-xvfb.sh, which provides a display";
+    const fs::path folder = fs::temp_directory_path() / ("raytracer-window-target-" +
+                                                         std::to_string(::getpid()));
+    fs::create_directories(folder);
+    const std::string scene = (sourceDirectory() / "scenes" / "scene5.in").string();
+    ProcessOptions options;
+    options.workingDirectory = folder;
+    const ProcessResult window =
+        runProcess({RAYTRACER_EXECUTABLE, scene, "64", "48", "60", "--target-error", "0.1",
+                    "--output", "window.png"},
+                   options);
+    fs::remove_all(folder);
+    ASSERT_TRUE(window.exited && window.exitStatus == 0)
+        << window.describeEnd() << "\n" << window.standardError;
+    EXPECT_NE(window.standardOutput.find("(target 10 %, uniform sampling: reached)"),
+              std::string::npos)
+        << window.standardOutput;
+}
+
 }  // namespace
 }  // namespace window_tests
