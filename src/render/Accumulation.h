@@ -26,6 +26,13 @@ struct Accumulation {
     float samplesDiscarded(int x, int y) const { return moments.at(x, y, 3); }
     // Kept and discarded: the samples the pixel has taken, the index of its next.
     float samplesTaken(int x, int y) const { return samplesKept(x, y) + samplesDiscarded(x, y); }
+    // The pixel's mean radiance, averaged over the channels.
+    double meanRadiance(int x, int y) const
+    {
+        return (static_cast<double>(estimate.at(x, y, 0)) + estimate.at(x, y, 1) +
+                estimate.at(x, y, 2)) /
+               3.0;
+    }
     // The variance of one sample, s^2 = M2 / (n - 1), averaged over the channels; 0 below two
     // samples kept, where it is not known.
     double sampleVariance(int x, int y) const;

@@ -2,21 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace render {
 
 namespace {
-
-double channelMeanRadiance(const Accumulation& accumulation)
-{
-    double sum = 0.0;
-    for (int y = 0; y < accumulation.height(); ++y)
-        for (int x = 0; x < accumulation.width(); ++x)
-            sum += (static_cast<double>(accumulation.estimate.at(x, y, 0)) +
-                    accumulation.estimate.at(x, y, 1) + accumulation.estimate.at(x, y, 2)) /
-                   3.0;
-    return sum / std::max(1.0, static_cast<double>(accumulation.width()) * accumulation.height());
-}
 
 double limited(double samples, int limit)
 {
@@ -39,12 +29,19 @@ AdaptivePlan planAdaptiveSampling(const Accumulation& accumulation,
     targets.samples.assign(static_cast<std::size_t>(targets.columns) * targets.rows,
                            static_cast<float>(limited(sampling.minimumSamples, sampling.sampleLimit)));
 
+    // Each pixel's standard deviation, top row first.
+    std::vector<double> deviations;
+    deviations.reserve(static_cast<std::size_t>(width) * height);
     double deviationSum = 0.0;
+    double radianceSum = 0.0;
     for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x)
-            deviationSum += std::sqrt(accumulation.sampleVariance(x, y));
+        for (int x = 0; x < width; ++x) {
+            deviations.push_back(std::sqrt(accumulation.sampleVariance(x, y)));
+            deviationSum += deviations.back();
+            radianceSum += accumulation.meanRadiance(x, y);
+        }
     const double pixels = std::max(1.0, static_cast<double>(width) * height);
-    const double targetVariance = std::pow(sampling.targetError * channelMeanRadiance(accumulation), 2);
+    const double targetVariance = std::pow(sampling.targetError * radianceSum / pixels, 2);
     // n_p = s_p * mean(s) / targetVariance (AdaptiveSampling.h); a black image needs the
     // minimum only.
     const double samplesPerDeviation =
@@ -57,9 +54,9 @@ AdaptivePlan planAdaptiveSampling(const Accumulation& accumulation,
     };
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
+            const double deviation = deviations[static_cast<std::size_t>(y) * width + x];
             const double wanted =
-                limited(std::ceil(std::sqrt(accumulation.sampleVariance(x, y)) * samplesPerDeviation),
-                        sampling.sampleLimit);
+                limited(std::ceil(deviation * samplesPerDeviation), sampling.sampleLimit);
             float& tile = targets.samples[tileOf(x, y)];
             // Beyond what a float counts exactly, the count would not grow.
             tile = std::max(tile, static_cast<float>(std::min(wanted, 16777216.0)));

@@ -35,9 +35,7 @@ std::optional<ErrorEstimate> estimateRelativeError(const Accumulation& accumulat
             if (variance < 0.0)
                 continue;
             varianceSum += variance;
-            radianceSum += (static_cast<double>(accumulation.estimate.at(x, y, 0)) +
-                            accumulation.estimate.at(x, y, 1) + accumulation.estimate.at(x, y, 2)) /
-                           3.0;
+            radianceSum += accumulation.meanRadiance(x, y);
             ++pixels;
             if (x > 0 && row[x - 1] >= 0.0) {
                 const double difference = variance - row[x - 1];
