@@ -158,7 +158,8 @@ vec3 sceneGradient(vec3 p, float step)
 // top) the surface is their union, and one object's own gradient turns at its edge where
 // the union's does not. The union of distances is exact only outside the solid, though;
 // inside, near the shared face, it measures the distance to that hidden face, and taps that
-// reach there tilt the gradient. A gradient whose length is not 1 says so: it is then taken
+// reach there tilt the gradient. Where two or more objects are marched (HAS_MARCHED_UNION),
+// a gradient whose length is not 1 says so: it is then taken
 // again from a point backed off the surface by the taps' reach, on the side the ray came
 // from, where every tap is outside. `side` is +1 for rays outside the solid, -1 inside.
 // A gradient that (nearly) vanishes, as on a surface of zero thickness (a disk, whose
@@ -176,7 +177,8 @@ vec3 sceneNormal(vec3 p, float step, bool tryP, vec3 q, float qStep, float side)
     for (int attempt = 0; attempt < 4; ++attempt) {
         vec3 gradient = sceneGradient(at, h);
         float magnitude = length(gradient);
-        if (!backedOff && magnitude > 0.5 && abs(magnitude - 1.0) > 0.01) {
+        if (HAS_MARCHED_UNION != 0 && !backedOff && magnitude > 0.5 &&
+            abs(magnitude - 1.0) > 0.01) {
             at += (side * 1.75 * h / magnitude) * gradient;
             backedOff = true;
             continue;

@@ -47,6 +47,7 @@ bool sameCodeAndArrays(const SceneShaderCode& a, const SceneShaderCode& b)
 {
     return a.exactGeometry == b.exactGeometry && a.exactFunctions == b.exactFunctions &&
            a.profileCounters == b.profileCounters && a.marchesAnything == b.marchesAnything &&
+           a.marchedUnion == b.marchedUnion &&
            a.shapeParameters == b.shapeParameters && a.shapeProgram == b.shapeProgram &&
            a.objectProgramStart == b.objectProgramStart &&
            a.objectBounds == b.objectBounds && a.objectCullingBits == b.objectCullingBits;

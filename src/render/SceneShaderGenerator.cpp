@@ -53,6 +53,7 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
         code.plan = planScene(scene, compiler);
         code.objectCullingBits = code.plan.objectCullingBits;
         code.marchesAnything = code.plan.marchesAnything;
+        code.marchedUnion = code.plan.marchedSurfaceCount >= 2;
         code.sceneFunctions = specializedSceneFunctions(code.plan, compiler.functions());
     } else {
         InterpretedScene interpreted = interpretedScene(scene, compiler);
@@ -99,6 +100,10 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
     // sphere tracer's loops are left out, which llvmpipe would otherwise run once per ray
     // with no pixel in them.
     define(out, "HAS_MARCHED_OBJECTS", code.marchesAnything ? 1 : 0);
+    // One marched object: its gradient is never tilted by another's, and a gradient whose
+    // length is not 1 is its own field's (a user SDF that is no exact distance), which
+    // backing off would not change: llvmpipe would pay a second gradient at every hit.
+    define(out, "HAS_MARCHED_UNION", code.marchedUnion ? 1 : 0);
     out << shaderCodeDefines();
     code.defines = out.str();
     return code;

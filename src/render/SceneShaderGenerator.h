@@ -56,6 +56,9 @@ struct SceneShaderCode {
     bool profileCounters = false;
     // Some ray marches some object (false where every object is met exactly).
     bool marchesAnything = true;
+    // Two or more objects are marched, so a normal's stencil may reach where one object's
+    // distance measures another's hidden face (sceneNormal backs off there).
+    bool marchedUnion = true;
 
     std::vector<glm::vec4> shapeParameters;
     std::vector<glm::ivec4> shapeProgram;  // General only

@@ -65,6 +65,8 @@ ScenePlan planScene(const Scene& scene, ShapeCompiler& compiler)
         const bool enterable =
             scene.finishes[scene.objects[light.object].finish].material() == MaterialKind::Dielectric ||
             glm::length(scene.camera.eye - light.center) < light.radius;
+        if (enterable && lightBits.count(static_cast<std::size_t>(light.object)) != 0)
+            ++plan.marchedSurfaceCount;
         if (enterable || lightBits.count(static_cast<std::size_t>(light.object)) == 0)
             plan.marchesAnything = true;
     }
@@ -108,8 +110,10 @@ ScenePlan planScene(const Scene& scene, ShapeCompiler& compiler)
             if (const auto plane = coneHalfSpace(*cone, shape.transform))
                 piece = CullingPiece{true, compiler.allocateValue(*plane), 0u};
         }
-        if (lightBits.count(i) == 0)
+        if (lightBits.count(i) == 0) {
             plan.marchesAnything = true;
+            ++plan.marchedSurfaceCount;
+        }
         if (piece) {
             const auto reserved = lightBits.find(i);
             const std::optional<std::uint32_t> bit =

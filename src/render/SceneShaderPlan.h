@@ -48,6 +48,10 @@ struct ScenePlan {
     bool everyObjectCulled = true;
     // Some ray marches some object (false where every object is met exactly).
     bool marchesAnything = true;
+    // Objects in the marched union whose surfaces outside rays meet by marching: those not
+    // met exactly, lights with a culling bit excepted unless a ray can enter them. With
+    // fewer than two, no normal's stencil can reach another object's hidden face.
+    int marchedSurfaceCount = 0;
     // Per object: its culling bit, or 0.
     std::vector<std::uint32_t> objectCullingBits;
 };

@@ -141,6 +141,25 @@ TEST(RayCulling, ASceneWithAShapeWithoutAClosedFormMarches)
     EXPECT_NE(code.defines.find("#define HAS_MARCHED_OBJECTS 1"), std::string::npos);
 }
 
+// A normal backs off the surface where its stencil may reach another object's hidden face
+// (sphere_tracing.glsl); with one marched object there is none, and a field whose gradient is
+// not unit (a user SDF that returns a safe bound) would pay a second gradient at every hit.
+TEST(NormalBackOff, OneMarchedObjectAmongExactOnesAndALightFormsNoUnion)
+{
+    const SceneShaderCode code = specialized(
+        "0 0 torus 0 1 0  2 0.5\n0 0 polyhedron 1\n 0 1 0 1\n0 1 sphere 0 3 0 0.5\n", 3);
+    EXPECT_EQ(code.plan.marchedSurfaceCount, 1);
+    EXPECT_NE(code.defines.find("#define HAS_MARCHED_UNION 0"), std::string::npos);
+}
+
+TEST(NormalBackOff, TwoMarchedObjectsFormAUnion)
+{
+    const SceneShaderCode code =
+        specialized("0 0 torus 0 1 0  2 0.5\n0 0 box 4 0 0  1 1 1\n", 2);
+    EXPECT_EQ(code.plan.marchedSurfaceCount, 2);
+    EXPECT_NE(code.defines.find("#define HAS_MARCHED_UNION 1"), std::string::npos);
+}
+
 TEST(RayCulling, ConeIsCulledByTheHalfSpaceOnTheFarSideOfItsApex)
 {
     // Opening downwards below its apex at y = 2; its distance bound grows at b / |(a, b)| of

@@ -440,12 +440,12 @@ TEST_F(UserSdfFiles, UnusableDeclarationIsAnErrorNamingTheShaderFileAndLine)
     }
 }
 
-TEST(UserSdfDeclarations, TheProjectKnotStepsByHalfItsDistance)
+TEST(UserSdfDeclarations, TheProjectKnotReturnsItsOwnSafeBound)
 {
     const Scene scene = parseSceneFile(testing_support::sourceDirectory() / "scenes" / "scene4.in");
     const auto& knot = std::get<UserSdf>(scene.objects.at(0).shape.geometry);
     EXPECT_EQ(knot.name, "knot");
-    EXPECT_FLOAT_EQ(knot.lipschitz, 2.0f);
+    EXPECT_FLOAT_EQ(knot.lipschitz, 1.0f);
     EXPECT_TRUE(knot.boundingRadius.has_value());
 }
 
