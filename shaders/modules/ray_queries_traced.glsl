@@ -212,11 +212,12 @@ bool spawn(vec3 p, vec3 facingNormal, vec3 direction, float tolerance, int objec
 // contact within the tolerance goes on, with a smaller one. A spent step budget counts as
 // blocked, as a spent budget counts as a hit for camera and path rays.
 //
-// The march runs in two nested loops: the inner one only steps, one distance each, until the
-// ray escapes or stops near a surface; the outer one judges the stop (the light reached, an
-// index-1 surface passed, a near miss marched on, or a blocker) and goes round again only
-// while some ray of the SIMD group marches on. llvmpipe executes both sides of every branch
-// for the whole group, so a judgement inside the step loop would be paid at every step.
+// The march runs in two nested loops: the inner one (shadowMarch, sphere_tracing.glsl) only
+// steps, one distance each, until the ray escapes or stops near a surface; the outer one
+// judges the stop (the light reached, an index-1 surface passed, a near miss marched on, or
+// a blocker) and goes round again only while some ray of the SIMD group marches on.
+// llvmpipe executes a branch for the whole group whenever one lane takes it, so a judgement
+// inside the step loop would be paid at nearly every step.
 const int kMaxShadowStops = kNearMissRetries + kMaxShadowCrossings + 1;
 
 vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, float tolerance,
@@ -276,18 +277,8 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
     float acceptedT = 0.0;
     float acceptedRadius = 0.0;
     for (int stop = 0; stop < kMaxShadowStops && loopIterationAllowed(); ++stop) {
-        float radius = FLOAT_MAX;
-        for (; stepsLeft > 0 && loopIterationAllowed(); --stepsLeft) {
-            COUNT_WORK(workShadowSteps, 1);
-            if (t >= clearDistance)
-                break;
-            radius = insideSign * sceneDistanceCulled(origin + t * wi, culling.mask);
-            if (radius < stopTolerance)
-                break;
-            acceptedT = t;
-            acceptedRadius = radius;
-            t += radius * uStepScale;
-        }
+        float radius = shadowMarch(origin, wi, insideSign, culling.mask, clearDistance,
+                                   stopTolerance, t, acceptedT, acceptedRadius, stepsLeft);
         if (t >= clearDistance)
             return transmittance;
         if (!(radius < stopTolerance))
@@ -331,13 +322,8 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
 
 // How far every camera ray through `pixel` travels before any surface comes within its hit
 // tolerance: the pixel's rays fill a cone around the one through its centre, and that cone
-// is marched once (cone marching, as in Amanatides, "Ray tracing with cones", 1984) so that
-// each of the pixel's paths starts its camera ray there instead of at the eye. A step from
-// t may advance by as much as leaves every point of the cone up to t + step farther from the
-// nearest surface than its tolerance: for a distance d at the cone's axis, a cone whose
-// rays stray at most `spread` per unit from the axis and tolerances growing by `growth`,
-// that is (d - tolerance0 - (spread + growth) t) / (1 + spread + growth). The same cone
-// bounds the culling (ray_culling.glsl takes the cone's spread as growth of tolerance).
+// is marched once (coneClearance, sphere_tracing.glsl) so that each of the pixel's paths
+// starts its camera ray there instead of at the eye.
 float cameraMarchStart(ivec2 pixel)
 {
 #if !HAS_MARCHED_OBJECTS
@@ -350,19 +336,5 @@ float cameraMarchStart(ivec2 pixel)
     float tolerance0 = uMinimumHitDistance;
     RayCulling culling = sceneRayCulling(uCameraEye, axis, tolerance0, growth);
     float limit = min(uFarDistance, culling.escapeDistance);
-    const int kConeSteps = 64;
-    float t = 0.0;
-    for (int step = 0; step < kConeSteps && t < limit && loopIterationAllowed(); ++step) {
-        COUNT_WORK(workCameraSteps, 1);
-        float clearance = sceneDistanceCulled(uCameraEye + t * axis, culling.mask) -
-                          tolerance0 - growth * t;
-        float advance = 0.9 * uStepScale * clearance / (1.0 + growth);
-        // Near a surface the steps shrink geometrically; the camera rays' own marches,
-        // each from here, finish the approach.
-        if (advance < tolerance0 + growth * t)
-            break;
-        t += advance;
-    }
-    return min(t, limit);
+    return coneClearance(uCameraEye, axis, tolerance0, growth, culling.mask, limit);
 }
-

@@ -2,6 +2,19 @@
 // "Enhanced Sphere Tracing", 2014). Needs sceneDistance and sceneDistanceAndObject from the
 // scene module, and their culled forms with sceneRayCulling (ray_culling.glsl).
 //
+// The three marchers, side by side, with one contract: each steps along a unit direction
+// from its origin through the pieces a culling mask leaves (ray_culling.glsl), never past a
+// point the caller knows to be clear of every surface, never beyond the distance it is
+// given, and each step evaluated is taken from a budget the caller holds.
+//   sphereTrace     a path's ray: over-relaxed, to the first surface within the ray cone's
+//                   hit tolerance (or its closest approach where the budget runs out);
+//   shadowMarch     a shadow ray's segment: plain steps, to the first stop within a given
+//                   tolerance or the segment's clear end; what a stop means (the light, a
+//                   near miss, a blocker) the caller judges (ray_queries_traced.glsl);
+//   coneClearance   a whole pixel's cone of camera rays at once: how far all of them may go
+//                   before any comes within its tolerance of a surface.
+// Hits are moved onto the surface by intersectAlongRay, and normals taken by sceneNormal.
+//
 // Tolerances follow the ray, not the world: a hit is accepted when the distance falls below
 // a fraction (uHitTolerance) of the footprint of the ray's cone there, and never below
 // uMinimumHitDistance, which the host derives from the scene's size. So a scene scaled by
@@ -131,6 +144,57 @@ MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone
     const float kCandidateErrorLimit = 1.5;
     best.found = bestError < kCandidateErrorLimit && best.object >= 0;
     return best;
+}
+
+// Steps a shadow ray from `t` along unit `direction` (`insideSign` as for sphereTrace) through
+// the pieces `mask` leaves until it stops within `stopTolerance` of a surface, reaches
+// `clearDistance` (t is then at least that) or spends `stepsLeft`. Returns the signed radius
+// at the stop (FLOAT_MAX where it reached the end first); acceptedT and acceptedRadius keep
+// the last point passed clear of every surface, for the stop's secant slope. Plain steps,
+// not over-relaxed: shadow segments are short, and a relaxed step that fails costs one more
+// evaluation than it saves (measured worse, docs/PERFORMANCE.md).
+float shadowMarch(vec3 origin, vec3 direction, float insideSign, uint mask, float clearDistance,
+                  float stopTolerance, inout float t, inout float acceptedT,
+                  inout float acceptedRadius, inout int stepsLeft)
+{
+    float radius = FLOAT_MAX;
+    for (; stepsLeft > 0 && loopIterationAllowed(); --stepsLeft) {
+        COUNT_WORK(workShadowSteps, 1);
+        if (t >= clearDistance)
+            break;
+        radius = insideSign * sceneDistanceCulled(origin + t * direction, mask);
+        if (radius < stopTolerance)
+            break;
+        acceptedT = t;
+        acceptedRadius = radius;
+        t += radius * uStepScale;
+    }
+    return radius;
+}
+
+// How far along unit `axis` from `origin` every ray of a cone may travel before any surface
+// comes within its tolerance, up to `limit`: the cone's rays stray at most `growth` per unit
+// from the axis, tolerances included, and the tolerance at the origin is `tolerance0`.
+// A step from t may advance by as much as leaves every point of the cone up to t + step
+// farther from the nearest surface than its tolerance: for a distance d at the axis that is
+// (d - tolerance0 - growth t) / (1 + growth) (cone marching, as in Amanatides, "Ray tracing
+// with cones", 1984). The pieces `mask` leaves must be those of a culling by the same cone.
+float coneClearance(vec3 origin, vec3 axis, float tolerance0, float growth, uint mask,
+                    float limit)
+{
+    const int kConeSteps = 64;
+    float t = 0.0;
+    for (int step = 0; step < kConeSteps && t < limit && loopIterationAllowed(); ++step) {
+        COUNT_WORK(workCameraSteps, 1);
+        float clearance = sceneDistanceCulled(origin + t * axis, mask) - tolerance0 - growth * t;
+        float advance = 0.9 * uStepScale * clearance / (1.0 + growth);
+        // Near a surface the steps shrink geometrically; the rays' own marches, each from
+        // here, finish the approach.
+        if (advance < tolerance0 + growth * t)
+            break;
+        t += advance;
+    }
+    return min(t, limit);
 }
 
 // The gradient of the marched part of the scene's distance (every object but the polyhedra,
