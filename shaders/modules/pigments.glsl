@@ -48,9 +48,8 @@ vec3 triplanarPigment(vec3 p, vec3 normal, float layer, float tileSize, float fo
 // met on it).
 vec3 pigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface)
 {
-    vec4 header = uPigments[3 * pigment];
-    vec3 first = uPigments[3 * pigment + 1].rgb;
-    int kind = int(header.x);
+    vec3 first = pigmentFirstColor(pigment);
+    int kind = pigmentKind(pigment);
 #if HAS_CHECKER_PIGMENT
     if (kind == PIGMENT_CHECKER) {
         // A hair, above float rounding at p, and never a hit tolerance for a point on the
@@ -59,13 +58,15 @@ vec3 pigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface
         // the other colour half a pixel wide at every one of them.
         vec3 magnitude = abs(p);
         float rounding = 1e-6 * (1.0 + max(max(magnitude.x, magnitude.y), magnitude.z));
-        float inset = max(max(1e-4 * min(header.y, 1.0), rounding), 2.0 * offSurface);
-        return checkerPigment(p - inset * n, first, uPigments[3 * pigment + 2].rgb, header.y);
+        float size = pigmentSize(pigment);
+        float inset = max(max(1e-4 * min(size, 1.0), rounding), 2.0 * offSurface);
+        return checkerPigment(p - inset * n, first, pigmentSecondColor(pigment), size);
     }
 #endif
 #if HAS_TEXTURE_PIGMENT
     if (kind == PIGMENT_TEXTURE)
-        return triplanarPigment(p, n, header.z, header.y, footprint);
+        return triplanarPigment(p, n, pigmentTextureLayer(pigment), pigmentSize(pigment),
+                                footprint);
 #endif
     return first;
 }

@@ -1,8 +1,8 @@
 // The scene's numbers, as uniforms: editing a value re-uploads them and never recompiles.
 // The host (render/SceneUniforms.cpp) fills them; the generated preamble sizes them. Each
-// record's layout is written here. Objects, finishes and lights are decoded only by the
-// accessors below; a pigment record only by pigmentColor (pigments.glsl), and an object's
-// shape program start (w) only by the interpreter (shape_interpreter.glsl).
+// record's layout is written here, and its records are decoded only by the accessors below.
+// (The shape parameters are no records: the generated code and the interpreter's program
+// address them by slot.)
 
 // Shape parameters: one or more vec4 per primitive or transform.
 uniform vec4 uShapeParameters[SHAPE_PARAMETER_ARRAY_SIZE];
@@ -29,11 +29,19 @@ uniform uint uSphereLightPieces;
 // (render/ShaderCodes.h), from the kinds' descriptions in scene/Pigments.h and
 // scene/Materials.h.
 
-// --- accessors: where object, finish and light records are decoded -----------------------
+// --- accessors: where object, pigment, finish and light records are decoded --------------
 
 int objectPigment(int object) { return uObjects[object].x; }
 int objectFinish(int object) { return uObjects[object].y; }
 int objectSphereLight(int object) { return uObjects[object].z; }
+int objectShapeProgramStart(int object) { return uObjects[object].w; }
+
+int pigmentKind(int pigment) { return int(uPigments[3 * pigment].x); }
+// A checker's cube edge, or a texture's tile size (world units per repeat).
+float pigmentSize(int pigment) { return uPigments[3 * pigment].y; }
+float pigmentTextureLayer(int pigment) { return uPigments[3 * pigment].z; }
+vec3 pigmentFirstColor(int pigment) { return uPigments[3 * pigment + 1].rgb; }
+vec3 pigmentSecondColor(int pigment) { return uPigments[3 * pigment + 2].rgb; }
 
 vec3 finishEmission(int finish) { return uFinishes[2 * finish].rgb; }
 float finishPhongExponent(int finish) { return uFinishes[2 * finish].w; }

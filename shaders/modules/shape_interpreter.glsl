@@ -69,7 +69,7 @@ float runShapeProgram(int start, vec3 p)
 
 float objectDistance(int object, vec3 p)
 {
-    int start = uObjects[object].w;
+    int start = objectShapeProgramStart(object);
     ivec4 first = uShapeProgram[start];
     // Most objects are one primitive: evaluate it directly, without the interpreter's stack.
     if (first.x == OPCODE_PRIMITIVE && uShapeProgram[start + 1].x == OPCODE_END)
@@ -120,7 +120,7 @@ bool objectInMask(int object, uint mask)
 // leave it out.
 bool isExactObject(int object)
 {
-    int start = uObjects[object].w;
+    int start = objectShapeProgramStart(object);
     ivec4 first = uShapeProgram[start];
     bool single = first.x == OPCODE_PRIMITIVE && uShapeProgram[start + 1].x == OPCODE_END;
     return single && (first.y == PRIMITIVE_POLYHEDRON ||
@@ -132,7 +132,7 @@ void exactSurfacesIntersect(vec3 origin, vec3 direction, float tMin, int only, i
     for (int object = 0; object < OBJECT_COUNT && loopIterationAllowed(); ++object) {
         if (!isExactObject(object) || (only >= 0 && object != only))
             continue;
-        ivec4 primitive = uShapeProgram[uObjects[object].w];
+        ivec4 primitive = uShapeProgram[objectShapeProgramStart(object)];
         if (primitive.y == PRIMITIVE_SPHERE) {
             exactSphere(origin, direction, uShapeParameters[primitive.z], tMin, object, hit);
             continue;
