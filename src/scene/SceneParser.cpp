@@ -1,9 +1,11 @@
 #include "scene/SceneParser.h"
 
 #include "scene/PrimitiveKinds.h"
+#include "scene/SceneFileText.h"
 #include "scene/SceneError.h"
 #include "scene/TokenCursor.h"
 #include "scene/Tokenizer.h"
+#include "scene/UserSdfDeclarations.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -36,7 +38,6 @@ const std::set<std::string> kSectionKeywords = {"environment"};
 constexpr int kMaxCount = TokenCursor::kMaxCount;  // lights, pigments, finishes, objects, planes
 constexpr int kMaxNestingDepth = 64;              // CSG blocks and transforms, one inside another
 constexpr std::size_t kMaxTokens = 4u << 20;      // words in the file
-constexpr std::size_t kMaxFileBytes = 64u << 20;  // bytes in the file
 
 // "sphere, polyhedron, ...": every primitive's keyword, for messages.
 std::string primitiveWords()
@@ -56,44 +57,6 @@ bool isIdentifier(const std::string& word)
     });
     // GLSL reserves names starting with gl_ and any name containing a double underscore.
     return allWordCharacters && word.rfind("gl_", 0) != 0 && word.find("__") == std::string::npos;
-}
-
-// Reads the `// @bound R` and `// @lipschitz L` declarations of a user SDF file.
-// A declaration the renderer would silently ignore is an error: a dropped @lipschitz makes
-// an overestimating function tunnel, a dropped @bound only costs time but is as surely a typo.
-void readUserSdfDeclarations(UserSdf& user)
-{
-    std::ifstream file(user.sourcePath);
-    std::string line;
-    int lineNumber = 0;
-    while (std::getline(file, line)) {
-        ++lineNumber;
-        const std::size_t at = line.find('@');
-        const std::size_t comment = line.find("//");
-        if (comment == std::string::npos || at == std::string::npos || at < comment)
-            continue;
-        std::istringstream words(line.substr(at));
-        std::string key;
-        std::string valueText;
-        words >> key >> valueText;
-        if (key != "@bound" && key != "@lipschitz")
-            continue;
-        float value = 0.0f;
-        const char* last = valueText.data() + valueText.size();
-        const auto [end, error] = std::from_chars(valueText.data(), last, value);
-        const bool number = error == std::errc() && end == last && std::isfinite(value);
-        if (key == "@bound") {
-            if (!number || !(value > 0.0f))
-                throw SceneError(user.sourcePath.string(), lineNumber, valueText,
-                                 "a positive bounding radius after @bound");
-            user.boundingRadius = value;
-        } else {
-            if (!number || !(value >= 1.0f))
-                throw SceneError(user.sourcePath.string(), lineNumber, valueText,
-                                 "a Lipschitz factor of at least 1 after @lipschitz");
-            user.lipschitz = value;
-        }
-    }
 }
 
 class Parser : private TokenCursor {
@@ -378,55 +341,6 @@ Scene parseSceneText(const std::string& text, const std::string& fileName,
     scene.sourcePath = fileName;
     return scene;
 }
-
-namespace {
-
-[[noreturn]] void failToRead(const fs::path& path, int error)
-{
-    throw std::runtime_error(path.string() + ": cannot read the scene file: " +
-                             std::strerror(error));
-}
-
-// The whole file, through POSIX calls so that a failure carries the system's reason.
-std::string readSceneFileText(const fs::path& path)
-{
-    const int descriptor = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (descriptor < 0)
-        failToRead(path, errno);
-    struct Closer {
-        int descriptor;
-        ~Closer() { ::close(descriptor); }
-    } closer{descriptor};
-    struct stat status {};
-    if (::fstat(descriptor, &status) != 0)
-        failToRead(path, errno);
-    if (S_ISDIR(status.st_mode))
-        failToRead(path, EISDIR);
-    const auto tooLarge = [&] {
-        throw std::runtime_error(path.string() + ": the scene file is larger than " +
-                                 std::to_string(kMaxFileBytes >> 20) +
-                                 " MiB, the most a scene file may hold");
-    };
-    if (S_ISREG(status.st_mode) && static_cast<std::size_t>(status.st_size) > kMaxFileBytes)
-        tooLarge();
-    std::string text;
-    char buffer[1 << 16];
-    for (;;) {
-        const ssize_t count = ::read(descriptor, buffer, sizeof buffer);
-        if (count < 0 && errno == EINTR)
-            continue;
-        if (count < 0)
-            failToRead(path, errno);
-        if (count == 0)
-            break;
-        text.append(buffer, static_cast<std::size_t>(count));
-        if (text.size() > kMaxFileBytes)
-            tooLarge();
-    }
-    return text;
-}
-
-}  // namespace
 
 Scene parseSceneFile(const fs::path& path)
 {
