@@ -86,6 +86,11 @@ vec3 pigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface
 vec3 pigmentColorOnce(int pigment, vec3 p, vec3 n, float footprint, float offSurface)
 {'
 
+# median X...: the middle value (the mean of the two middle ones for an even count).
+median() {
+    printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}'
+}
+
 # seconds DATA SCENE [ARGS]: the render's own time for exactly $spp samples per pixel.
 seconds() {
     local data="$1" scene="$2"
@@ -126,10 +131,15 @@ for scene in "${scenes[@]}"; do
                 *) ratios+=("$(python3 -c "print(1 - $without / $with)")") ;;
             esac
         done
-        share=$(printf '%s\n' "${ratios[@]}" | sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}')
+        share=$(median "${ratios[@]}")
         row="$row $(python3 -c "print(f'{100 * $share:.0f} %')") |"
     done
-    median_base=$(printf '%s\n' "${base_all[@]}" | sort -g | awk '{a[NR]=$1} END {print (NR%2) ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2}')
+    median_base=$(median "${base_all[@]}")
     echo "$row $median_base |"
+    # A render of a fraction of a second is at the mercy of one stall of the machine (and of
+    # the summary's 10 ms resolution): its shares mean nothing.
+    if python3 -c "import sys; sys.exit(0 if $median_base < 1.0 else 1)"; then
+        echo "(the row above: renders of $median_base s are too short to time; give more --spp or a larger --size)"
+    fi
 done
 echo "(share of the render's time: saved by taking the part out, or added by doing it twice; the parts overlap and need not sum to 100 %)"
