@@ -98,7 +98,7 @@ cp "$scene" "$out/edited/scene.in"
 : >"$out/edits.log"
 edit_scene_forever &
 editor=$!
-sample_rss window xvfb-run --auto-servernum --server-args="-screen 0 320x240x24" \
+sample_rss window xvfb-run --auto-servernum --server-args="-screen 0 320x240x24 -noreset" \
     "${run[@]}" "$out/edited/scene.in" "${options[@]}" --output "$out/window.exr"
 kill "$editor" 2>/dev/null || true
 wait "$editor" 2>/dev/null || true

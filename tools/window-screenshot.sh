@@ -9,7 +9,7 @@ scene="${1:-$root/scenes/scene3.in}"
 seconds="${2:-20}"
 output="${3:-$root/docs/window.png}"
 display_file=$(mktemp)
-Xvfb -displayfd 9 -screen 0 800x600x24 -nolisten tcp 9>"$display_file" 2>/dev/null &
+Xvfb -displayfd 9 -screen 0 800x600x24 -nolisten tcp -noreset 9>"$display_file" 2>/dev/null &
 server=$!
 trap 'kill $server 2>/dev/null; rm -f "$display_file"' EXIT
 while [ ! -s "$display_file" ]; do sleep 0.1; done
