@@ -74,17 +74,18 @@ vec3 sceneGradientOnce(vec3 p, float step)
 {'
 variant nearmisses ray_queries_traced.glsl \
     'const int kNearMissRetries = 3;' 'const int kNearMissRetries = 0;'
-variant pigments pigments.glsl \
-    'vec3 pigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface)
-{' \
-    'vec3 pigmentColorOnce(int pigment, vec3 p, vec3 n, float footprint, float offSurface);
-vec3 pigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface)
+# pigmentColor is generated from the pigment table and follows pigments.glsl: the copy
+# wraps it at the head of materials.glsl, the next module, and names the wrapper for the
+# modules after it.
+variant pigments materials.glsl \
+    '// Materials (the scene format'"'"'s finishes) as BSDFs.' \
+    'vec3 pigmentColorTwice(int pigment, vec3 p, vec3 n, float footprint, float offSurface)
 {
-    return 0.5 * (pigmentColorOnce(pigment, p, n, footprint, offSurface) +
-                  pigmentColorOnce(pigment, p + 1e-6 * n, n, 1.001 * footprint, offSurface));
+    return 0.5 * (pigmentColor(pigment, p, n, footprint, offSurface) +
+                  pigmentColor(pigment, p + 1e-6 * n, n, 1.001 * footprint, offSurface));
 }
-vec3 pigmentColorOnce(int pigment, vec3 p, vec3 n, float footprint, float offSurface)
-{'
+#define pigmentColor pigmentColorTwice
+// Materials (the scene format'"'"'s finishes) as BSDFs.'
 
 # median X...: the middle value (the mean of the two middle ones for an even count).
 median() {

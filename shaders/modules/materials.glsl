@@ -1,6 +1,13 @@
 // Materials (the scene format's finishes) as BSDFs. Directions point away from the surface:
 // `wo` towards where the path came from, `wi` towards where it goes next. Evaluations exclude
 // the cosine; sample weights are f * cos / pdf.
+//
+// Each material's functions, named by its prefix in the material table (scene/Materials.h):
+//   BsdfSample <prefix>Sample(Surface s, vec3 wo, float uLobe, vec2 uDirection)
+//   vec3 <prefix>Evaluate(Surface s, vec3 wo, vec3 wi)   not for a delta (mirror, glass)
+//   float <prefix>Pdf(Surface s, vec3 wo, vec3 wi)       not for a delta
+// isDeltaMaterial and the dispatchers bsdfSample, bsdfEvaluate and bsdfPdf are generated
+// from that table (render/KindDispatchers.cpp) and follow this module.
 
 struct Surface {
     vec3 position;
@@ -34,11 +41,6 @@ struct BsdfSample {
 BsdfSample invalidSample()
 {
     return BsdfSample(false, vec3(0.0), vec3(0.0), 0.0, false, 1.0);
-}
-
-bool isDeltaMaterial(int material)
-{
-    return material == MATERIAL_MIRROR || material == MATERIAL_DIELECTRIC;
 }
 
 // --- Blinn-Phong ---------------------------------------------------------------------------
@@ -119,7 +121,17 @@ BsdfSample blinnPhongSample(Surface s, vec3 wo, float uLobe, vec2 uDirection)
 
 // --- Lambertian ----------------------------------------------------------------------------
 
-BsdfSample lambertianSample(Surface s, vec3 wo, vec2 uDirection)
+vec3 lambertianEvaluate(Surface s, vec3 wo, vec3 wi)
+{
+    return dot(s.facingNormal, wi) > 0.0 ? s.color * INV_PI : vec3(0.0);
+}
+
+float lambertianPdf(Surface s, vec3 wo, vec3 wi)
+{
+    return cosineHemispherePdf(dot(s.facingNormal, wi));
+}
+
+BsdfSample lambertianSample(Surface s, vec3 wo, float uLobe, vec2 uDirection)
 {
     vec3 n = s.facingNormal;
     vec3 wi = basisAround(n) * sampleCosineHemisphere(uDirection);
@@ -134,7 +146,7 @@ BsdfSample lambertianSample(Surface s, vec3 wo, vec2 uDirection)
 // Perfect reflection weighted by Schlick's Fresnel with the pigment as R0.
 
 #if HAS_MIRROR
-BsdfSample mirrorSample(Surface s, vec3 wo)
+BsdfSample mirrorSample(Surface s, vec3 wo, float uLobe, vec2 uDirection)
 {
     vec3 n = s.facingNormal;
     float cosO = dot(n, wo);
@@ -153,7 +165,7 @@ BsdfSample mirrorSample(Surface s, vec3 wo)
 // a path through a solid. Total internal reflection reflects.
 
 #if HAS_DIELECTRIC
-BsdfSample dielectricSample(Surface s, vec3 wo, float uLobe)
+BsdfSample dielectricSample(Surface s, vec3 wo, float uLobe, vec2 uDirection)
 {
     float etaOutgoingSide = s.entering ? 1.0 : s.ior;
     float etaOtherSide = s.entering ? s.ior : 1.0;
@@ -171,47 +183,3 @@ BsdfSample dielectricSample(Surface s, vec3 wo, float uLobe)
     return BsdfSample(true, normalize(refracted), s.color * (eta * eta), 0.0, true, eta * eta);
 }
 #endif
-
-// --- dispatch ------------------------------------------------------------------------------
-
-// f(wo, wi) for the non-delta materials (zero for the delta ones).
-vec3 bsdfEvaluate(Surface s, vec3 wo, vec3 wi)
-{
-#if HAS_BLINN_PHONG
-    if (s.material == MATERIAL_BLINN_PHONG)
-        return blinnPhongEvaluate(s, wo, wi);
-#endif
-    if (s.material == MATERIAL_LAMBERTIAN)
-        return dot(s.facingNormal, wi) > 0.0 ? s.color * INV_PI : vec3(0.0);
-    return vec3(0.0);
-}
-
-float bsdfPdf(Surface s, vec3 wo, vec3 wi)
-{
-#if HAS_BLINN_PHONG
-    if (s.material == MATERIAL_BLINN_PHONG)
-        return blinnPhongPdf(s, wo, wi);
-#endif
-    if (s.material == MATERIAL_LAMBERTIAN)
-        return cosineHemispherePdf(dot(s.facingNormal, wi));
-    return 0.0;
-}
-
-// `uLobe` chooses between lobes (or reflection and refraction), `uDirection` the direction
-// within one: both uniform on [0, 1), from the sampler.
-BsdfSample bsdfSample(Surface s, vec3 wo, float uLobe, vec2 uDirection)
-{
-#if HAS_DIELECTRIC
-    if (s.material == MATERIAL_DIELECTRIC)
-        return dielectricSample(s, wo, uLobe);
-#endif
-#if HAS_MIRROR
-    if (s.material == MATERIAL_MIRROR)
-        return mirrorSample(s, wo);
-#endif
-#if HAS_BLINN_PHONG
-    if (s.material == MATERIAL_BLINN_PHONG)
-        return blinnPhongSample(s, wo, uLobe, uDirection);
-#endif
-    return lambertianSample(s, wo, uDirection);
-}

@@ -43,30 +43,38 @@ vec3 triplanarPigment(vec3 p, vec3 normal, float layer, float tileSize, float fo
 }
 #endif
 
-// The pigment's colour at surface point p with outward normal n; `footprint` is the ray
-// cone's width there and `offSurface` how far outside the surface p may lie (0 for a point
-// met on it).
-vec3 pigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface)
+// --- each kind's colour ------------------------------------------------------------------
+// vec3 <kind>PigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface):
+// the colour at surface point p with outward normal n; `footprint` is the ray cone's width
+// there and `offSurface` how far outside the surface p may lie (0 for a point met on it).
+// pigmentColor, which chooses among them by the pigment's kind, is generated from the
+// pigment table (render/KindDispatchers.cpp) and follows this module.
+
+vec3 solidPigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface)
 {
-    vec3 first = pigmentFirstColor(pigment);
-    int kind = pigmentKind(pigment);
-#if HAS_CHECKER_PIGMENT
-    if (kind == PIGMENT_CHECKER) {
-        // A hair, above float rounding at p, and never a hit tolerance for a point on the
-        // surface: an inset that long moves the lookup across cube boundaries on a tilted
-        // face, and a wall whose plane runs along cube edges (x - y = 10) showed bands of
-        // the other colour half a pixel wide at every one of them.
-        vec3 magnitude = abs(p);
-        float rounding = 1e-6 * (1.0 + max(max(magnitude.x, magnitude.y), magnitude.z));
-        float size = pigmentSize(pigment);
-        float inset = max(max(1e-4 * min(size, 1.0), rounding), 2.0 * offSurface);
-        return checkerPigment(p - inset * n, first, pigmentSecondColor(pigment), size);
-    }
-#endif
-#if HAS_TEXTURE_PIGMENT
-    if (kind == PIGMENT_TEXTURE)
-        return triplanarPigment(p, n, pigmentTextureLayer(pigment), pigmentSize(pigment),
-                                footprint);
-#endif
-    return first;
+    return pigmentFirstColor(pigment);
 }
+
+#if HAS_CHECKER_PIGMENT
+vec3 checkerPigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface)
+{
+    // A hair, above float rounding at p, and never a hit tolerance for a point on the
+    // surface: an inset that long moves the lookup across cube boundaries on a tilted
+    // face, and a wall whose plane runs along cube edges (x - y = 10) showed bands of
+    // the other colour half a pixel wide at every one of them.
+    vec3 magnitude = abs(p);
+    float rounding = 1e-6 * (1.0 + max(max(magnitude.x, magnitude.y), magnitude.z));
+    float size = pigmentSize(pigment);
+    float inset = max(max(1e-4 * min(size, 1.0), rounding), 2.0 * offSurface);
+    return checkerPigment(p - inset * n, pigmentFirstColor(pigment),
+                          pigmentSecondColor(pigment), size);
+}
+#endif
+
+#if HAS_TEXTURE_PIGMENT
+vec3 texturePigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface)
+{
+    return triplanarPigment(p, n, pigmentTextureLayer(pigment), pigmentSize(pigment),
+                            footprint);
+}
+#endif

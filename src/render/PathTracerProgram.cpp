@@ -1,5 +1,7 @@
 #include "render/PathTracerProgram.h"
 
+#include "render/KindDispatchers.h"
+
 #include <chrono>
 
 namespace render {
@@ -56,7 +58,9 @@ ShaderSource assemblePathTracerSource(const SceneShaderCode& code, const fs::pat
     module("camera.glsl");
     module("fresnel.glsl");
     module("pigments.glsl");
+    source.add("<generated: pigmentColor over the pigment kinds>", pigmentDispatcher());
     module("materials.glsl");
+    source.add("<generated: the BSDF dispatchers over the materials>", materialDispatchers());
     module("ray_queries.glsl");
     if (code.exactGeometry) {
         source.add("<generated: the scene's exact intersections>", code.exactFunctions);

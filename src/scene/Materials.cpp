@@ -8,8 +8,9 @@ const std::vector<MaterialDescription>& materialDescriptions()
 {
     static const std::vector<MaterialDescription> descriptions = [] {
         std::vector<MaterialDescription> list;
-#define SCENE_MATERIAL_DESCRIPTION(kind, name, featureSwitch)                                     \
-    list.push_back({MaterialKind::kind, static_cast<int>(list.size()), #kind, name, featureSwitch});
+#define SCENE_MATERIAL_DESCRIPTION(kind, name, featureSwitch, glslPrefix, scattering)             \
+    list.push_back({MaterialKind::kind, static_cast<int>(list.size()), #kind, name, featureSwitch,  \
+                    glslPrefix, scattering});
         SCENE_MATERIALS(SCENE_MATERIAL_DESCRIPTION)
 #undef SCENE_MATERIAL_DESCRIPTION
         return list;

@@ -1,12 +1,14 @@
 #pragma once
 // The pigment kinds, each described once in SCENE_PIGMENTS: its keyword in the scene format,
-// how the numbers after it are read, and the #define that compiles it into a shader (none
-// for the solid colour, which every shader has: it is pigmentColor's fallback). The enum,
-// the parser's words, the shaders' codes (PIGMENT_<KIND>, as generated #defines) and the
-// feature switches all come from this list.
+// how the numbers after it are read, the #define that compiles it into a shader (none for
+// the solid colour, which every shader has: it is pigmentColor's fallback), and its GLSL
+// colour function. The enum, the parser's words, the shaders' codes (PIGMENT_<KIND>, as
+// generated #defines), the feature switches and the shaders' pigmentColor
+// (render/KindDispatchers.cpp) all come from this list.
 //
-// Adding a pigment: a row here with its reader below it in Pigments.cpp, and its colour in
-// shaders/modules/pigments.glsl (with its numbers packed in render/SceneUniforms.cpp).
+// Adding a pigment: a row here with its reader below it in Pigments.cpp, and its colour
+// function in shaders/modules/pigments.glsl, with the signature the others have (and its
+// numbers packed in render/SceneUniforms.cpp).
 // tests/scene/KindTablesTest.cpp walks every row.
 #include "scene/FileLookup.h"
 #include "scene/TokenCursor.h"
@@ -19,11 +21,11 @@
 
 namespace scene {
 
-//  X(kind, keyword, feature switch or nullptr, reader), in code order
-#define SCENE_PIGMENTS(X)                                                 \
-    X(Solid, "solid", nullptr, readSolidPigment)                          \
-    X(Checker, "checker", "HAS_CHECKER_PIGMENT", readCheckerPigment)      \
-    X(Texture, "texmap", "HAS_TEXTURE_PIGMENT", readTexturePigment)
+//  X(kind, keyword, feature switch or nullptr, reader, GLSL colour function), in code order
+#define SCENE_PIGMENTS(X)                                                                       \
+    X(Solid, "solid", nullptr, readSolidPigment, "solidPigmentColor")                           \
+    X(Checker, "checker", "HAS_CHECKER_PIGMENT", readCheckerPigment, "checkerPigmentColor")     \
+    X(Texture, "texmap", "HAS_TEXTURE_PIGMENT", readTexturePigment, "texturePigmentColor")
 
 enum class PigmentKind {
 #define SCENE_PIGMENT_ENUMERATOR(kind, ...) kind,
@@ -53,6 +55,9 @@ struct PigmentDescription {
     const char* keyword;
     const char* featureSwitch;  // 1 where the shader has the pigment; nullptr: always there
     PigmentReader read;
+    // vec3 NAME(int pigment, vec3 p, vec3 n, float footprint, float offSurface), as
+    // pigmentColor (shaders/modules/pigments.glsl says what the arguments are)
+    const char* glslFunction;
 };
 
 // Every pigment kind, in code order.
