@@ -575,17 +575,8 @@ def table(header, rows):
     return "\n".join(lines)
 
 
-def write_report(args):
-    data = args.data_dir
-    run = {r["key"]: r["value"] for r in read_csv(os.path.join(data, "run.csv"))}
-    references = read_csv(os.path.join(data, "references.csv"))
-    convergence = read_csv(os.path.join(data, "convergence.csv"))
-    settings = read_csv(os.path.join(data, "settings.csv"))
-    equal_time = read_csv(os.path.join(data, "equal_time.csv"))
-    relative_plots = os.path.relpath(data, os.path.dirname(os.path.abspath(args.markdown)))
-    image = lambda name: f"{relative_plots}/{name}"  # noqa: E731
-    all_names = scene_order(convergence or settings or equal_time)
-
+def intro_section(args, run, relative_plots):
+    """The title, what the page is and who made it, and the machine and run."""
     out = []
     out.append("# What accuracy costs in time\n")
     if args.note:
@@ -606,7 +597,12 @@ def write_report(args):
         f"at the start, {run.get('load_average_at_end', '?')} at the end"]]))
     out.append("")
     out.append(f"Command of the measurement: `{run.get('command', '?').strip(chr(34))}`\n")
+    return out
 
+
+def method_section(run, references):
+    """How the error, noise, brightness and time are measured."""
+    out = []
     out.append("## How it is measured\n")
     eps = run.get("relative_mse_epsilon", "0.01")
     ref = references[0] if references else {}
@@ -631,6 +627,14 @@ def write_report(args):
         "tone map radiance 0.1 is level 105 of 255, so the darker part of the picture counts "
         "less than relatively, and the tone RMSE below covers it. At the Monte Carlo rate the "
         "relative MSE falls as 1/spp.\n"
+        "- **Relative RMSE** (rel RMSE): sqrt(mean over pixels and channels of (x − ref)²) / "
+        "mean over pixels and channels of ref, on linear radiance: the metric `--target-error` "
+        "aims at, and the one the independent renderers' comparisons use. Unlike the relative "
+        "MSE it weighs every pixel's error in absolute terms, so the brightest and noisiest "
+        "pixels (caustics, light seen through glass) dominate it; it falls as spp^−1/2. The "
+        "per-pixel sections and *Rendering to a target error* below report it; the "
+        "convergence, equal-time and settings sections report the relative MSE and the tone "
+        "RMSE.\n"
         "- **Tone RMSE**: root mean square difference of the displayed pictures on the 0–255 "
         "scale, after the display tone map of `shaders/modules/tone_map.frag` (exposure 4, "
         "Hable's filmic curve normalised to white 11.2, gamma 2.2) computed in double and not "
@@ -649,7 +653,11 @@ def write_report(args):
         f"{BIAS_RATIO} or its brightness differs by more than {BRIGHTNESS_SIGMAS:g} standard "
         "deviations.\n")
 
-    # References
+    return out
+
+
+def references_section(references):
+    out = []
     if references:
         out.append("### References\n")
         out.append(table(
@@ -660,251 +668,262 @@ def write_report(args):
               fmt(number(r, "tone_rmse_noise")), r["discarded"],
               "yes" if r["cached"] == "1" else "no"] for r in references]))
         out.append("")
+    return out
 
-    reading = []
 
-    # Convergence
-    if convergence:
-        summary = convergence_summary(convergence)
-        plot_convergence(convergence, summary, data, "rel_mse", "relative MSE", -1.0,
-                         "convergence_rel_mse.png")
-        plot_convergence(convergence, summary, data, "tone_rmse", "tone-mapped RMSE (0-255)",
-                         -0.5, "convergence_tone_rmse.png")
-        plot_convergence_overview(convergence, summary, data, "convergence_overview.png")
-        first = convergence[0]
-        out.append("## Convergence: error against render time\n")
-        out.append(
-            f"Default settings, {first['width']}x{first['height']}, spp = 1, 2, 4, … "
-            f"{convergence[-1]['spp']} in one progressive run. The slope is the least-squares "
-            "slope of log relative MSE against log render time (and against log spp) over the "
-            f"points from 2 spp on whose error is above {FLOOR_MARGIN:g}× the reference's noise; "
-            "the Monte Carlo rate is −1. relMSE·spp is the relative MSE times spp at the last "
-            "fitted point over that at the first: 1 at the Monte Carlo rate.\n")
-        rows_out = []
-        for name, s in summary.items():
-            rows_out.append([
-                name, fmt(s["mpaths"]), fmt(s["cpu_per_wall"], 2), fmt(s["compile"], 2),
-                fmt(s["warmup"], 2), fmt(number(s["first"], "rel_mse")),
-                fmt(number(s["last"], "rel_mse")), fmt(number(s["last"], "tone_rmse")),
-                fmt(s["slope_time"], 2) if s["slope_time"] is not None else "–",
-                fmt(s["slope_spp"], 2) if s["slope_spp"] is not None else "–",
-                fmt(s["per_sample_growth"], 2), fmt(s["noise_ratio"], 2),
-                fmt(s["reference_noise"])])
-        out.append(table(
-            ["scene", "Mpaths/s", "CPU s per wall s", "compile (s)", "warm-up frame (s)",
-             "relative MSE at 1 spp", f"at {convergence[-1]['spp']} spp",
-             f"tone RMSE at {convergence[-1]['spp']} spp", "slope vs time", "slope vs spp",
-             "relMSE·spp growth", "error ÷ noise (median)", "reference's noise"], rows_out))
-        out.append("")
-        out.append("![relative MSE against time, all scenes]"
-                   f"({image('convergence_overview.png')})\n")
-        out.append(f"![relative MSE against time per scene]({image('convergence_rel_mse.png')})\n")
-        out.append("![tone-mapped RMSE against time per scene]"
-                   f"({image('convergence_tone_rmse.png')})\n")
+def convergence_section(convergence, data, image):
+    """Error against render time; returns the page's lines and the reading's paragraphs."""
+    out, reading = [], []
+    summary = convergence_summary(convergence)
+    plot_convergence(convergence, summary, data, "rel_mse", "relative MSE", -1.0,
+                     "convergence_rel_mse.png")
+    plot_convergence(convergence, summary, data, "tone_rmse", "tone-mapped RMSE (0-255)",
+                     -0.5, "convergence_tone_rmse.png")
+    plot_convergence_overview(convergence, summary, data, "convergence_overview.png")
+    first = convergence[0]
+    out.append("## Convergence: error against render time\n")
+    out.append(
+        f"Default settings, {first['width']}x{first['height']}, spp = 1, 2, 4, … "
+        f"{convergence[-1]['spp']} in one progressive run. The slope is the least-squares "
+        "slope of log relative MSE against log render time (and against log spp) over the "
+        f"points from 2 spp on whose error is above {FLOOR_MARGIN:g}× the reference's noise; "
+        "the Monte Carlo rate is −1. relMSE·spp is the relative MSE times spp at the last "
+        "fitted point over that at the first: 1 at the Monte Carlo rate.\n")
+    rows_out = []
+    for name, s in summary.items():
+        rows_out.append([
+            name, fmt(s["mpaths"]), fmt(s["cpu_per_wall"], 2), fmt(s["compile"], 2),
+            fmt(s["warmup"], 2), fmt(number(s["first"], "rel_mse")),
+            fmt(number(s["last"], "rel_mse")), fmt(number(s["last"], "tone_rmse")),
+            fmt(s["slope_time"], 2) if s["slope_time"] is not None else "–",
+            fmt(s["slope_spp"], 2) if s["slope_spp"] is not None else "–",
+            fmt(s["per_sample_growth"], 2), fmt(s["noise_ratio"], 2),
+            fmt(s["reference_noise"])])
+    out.append(table(
+        ["scene", "Mpaths/s", "CPU s per wall s", "compile (s)", "warm-up frame (s)",
+         "relative MSE at 1 spp", f"at {convergence[-1]['spp']} spp",
+         f"tone RMSE at {convergence[-1]['spp']} spp", "slope vs time", "slope vs spp",
+         "relMSE·spp growth", "error ÷ noise (median)", "reference's noise"], rows_out))
+    out.append("")
+    out.append("![relative MSE against time, all scenes]"
+               f"({image('convergence_overview.png')})\n")
+    out.append(f"![relative MSE against time per scene]({image('convergence_rel_mse.png')})\n")
+    out.append("![tone-mapped RMSE against time per scene]"
+               f"({image('convergence_tone_rmse.png')})\n")
 
-        spp_values = sorted({int(r["spp"]) for r in convergence})
-        names = list(summary)
-        lookup = {(r["scene"], int(r["spp"])): r for r in convergence}
-        out.append("Relative MSE (render seconds) at each spp:\n")
-        out.append(table(["spp"] + names, [
-            [str(spp)] + [
-                f"{fmt(number(lookup[(n, spp)], 'rel_mse'))} "
-                f"({fmt(number(lookup[(n, spp)], 'seconds'), 2)} s)"
-                if (n, spp) in lookup else "–" for n in names]
-            for spp in spp_values]))
-        out.append("")
+    spp_values = sorted({int(r["spp"]) for r in convergence})
+    names = list(summary)
+    lookup = {(r["scene"], int(r["spp"])): r for r in convergence}
+    out.append("Relative MSE (render seconds) at each spp:\n")
+    out.append(table(["spp"] + names, [
+        [str(spp)] + [
+            f"{fmt(number(lookup[(n, spp)], 'rel_mse'))} "
+            f"({fmt(number(lookup[(n, spp)], 'seconds'), 2)} s)"
+            if (n, spp) in lookup else "–" for n in names]
+        for spp in spp_values]))
+    out.append("")
 
-        at_rate = [n for n, s in summary.items()
-                   if s["slope_time"] is not None and -1.2 <= s["slope_time"] <= -0.8]
-        off_rate = [n for n, s in summary.items()
-                    if s["slope_time"] is not None and not (-1.2 <= s["slope_time"] <= -0.8)]
-        text = ("**Convergence.** Relative MSE falls with render time at the Monte Carlo rate "
-                "(fitted slope within ±0.2 of −1) in "
-                f"{', '.join(at_rate) if at_rate else 'no scene'}")
-        text += "." if not off_rate else f"; not in {', '.join(off_rate)}, for the reasons below."
-        slopes = [s["slope_tone_time"] for s in summary.values()
-                  if s["slope_tone_time"] is not None]
-        if slopes:
-            text += (f" The tone-mapped RMSE falls with slopes from {fmt(min(slopes), 2)} to "
-                     f"{fmt(max(slopes), 2)} (the rate is −0.5).")
-            shares = [number(s["last"], "reference_tone_rmse_noise") /
-                      number(s["last"], "tone_rmse") for s in summary.values()]
-            if min(slopes) > -0.45 or max(slopes) > -0.4:
-                text += (" It is shallower for two reasons: the tone map is bounded and "
-                         "compressive, so the large errors of images of a few samples are "
-                         "clipped and the early points lie low (the −0.5 rate holds only once "
-                         "the noise is small against the tone curve's bend); and at the last "
-                         "point the reference's own tone noise is "
-                         f"{100 * min(shares):.0f}–{100 * max(shares):.0f} % of the error, "
-                         "adding in quadrature.")
-        reading.append(text)
-        bullets = []
-        for name in off_rate:
-            s = summary[name]
-            reasons = []
-            if s["per_sample_growth"] > 1.5:
-                reasons.append(
-                    f"relMSE·spp grows {fmt(s['per_sample_growth'], 2)}× over the fit: the "
-                    "error is heavy-tailed, dominated by rare bright paths (fireflies) that a "
-                    "short run has not met yet, so the early points lie below the trend and "
-                    "the fitted slope is shallower than −1 although each pixel's variance "
-                    "still falls as 1/spp")
-            elif s["per_sample_growth"] < 0.67:
-                reasons.append(
-                    f"relMSE·spp falls {fmt(1 / s['per_sample_growth'], 2)}× over the fit: "
-                    "a few early fireflies dominate the first points and average away later")
-            if s["floor_reached"]:
-                reasons.append("the last points approach the reference's own noise and were "
-                               "left out of the fit")
-            ratio = number(s["last"], "seconds") / int(s["last"]["spp"])
-            first_ratio = number(s["first"], "seconds") / int(s["first"]["spp"])
-            steeper_in_time = (s["slope_time"] is not None and s["slope_spp"] is not None
-                               and s["slope_time"] < s["slope_spp"] - 0.05)
-            if first_ratio > 1.5 * ratio and steeper_in_time:
-                reasons.append(
-                    f"the first samples cost more per sample ({fmt(1e3 * first_ratio, 3)} ms "
-                    f"against {fmt(1e3 * ratio, 3)} ms later): per-frame overhead or load on "
-                    "the shared machine, which makes the slope against time steeper than "
-                    "against spp")
-            if not reasons:
-                reasons.append("no single cause stands out; with one run per scene the "
-                               "fitted slope carries the noise of the error itself")
-            bullets.append(f"- {name}: slope {fmt(s['slope_time'], 2)} against time, "
-                           f"{fmt(s['slope_spp'], 2)} against spp; " + "; ".join(reasons) + ".")
-        heavy = [n for n, s in summary.items() if n in at_rate and s["per_sample_growth"] > 1.5]
-        if heavy:
-            bullets.append(
-                f"- {', '.join(heavy)}: at the rate overall, but relMSE·spp still grows "
-                "over the fit (rare bright paths, as above), so single points scatter about "
-                "the line.")
-        ratios = [s["noise_ratio"] for s in summary.values() if not math.isnan(s["noise_ratio"])]
-        if ratios:
-            bullets.append(
-                "- The default-settings renders differ from their references by noise alone: "
-                f"error ÷ noise has medians between {fmt(min(ratios), 2)} and "
-                f"{fmt(max(ratios), 2)} across scenes (1 expected). With the settings that made "
-                "the reference, no bias can show in this curve; it flattens only on the "
-                "reference's own noise (the red line). The default settings' own bias against "
-                "the true image is what the settings sweep below measures.")
-        reading.append("\n".join(bullets))
+    at_rate = [n for n, s in summary.items()
+               if s["slope_time"] is not None and -1.2 <= s["slope_time"] <= -0.8]
+    off_rate = [n for n, s in summary.items()
+                if s["slope_time"] is not None and not (-1.2 <= s["slope_time"] <= -0.8)]
+    text = ("**Convergence.** Relative MSE falls with render time at the Monte Carlo rate "
+            "(fitted slope within ±0.2 of −1) in "
+            f"{', '.join(at_rate) if at_rate else 'no scene'}")
+    text += "." if not off_rate else f"; not in {', '.join(off_rate)}, for the reasons below."
+    slopes = [s["slope_tone_time"] for s in summary.values()
+              if s["slope_tone_time"] is not None]
+    if slopes:
+        text += (f" The tone-mapped RMSE falls with slopes from {fmt(min(slopes), 2)} to "
+                 f"{fmt(max(slopes), 2)} (the rate is −0.5).")
+        shares = [number(s["last"], "reference_tone_rmse_noise") /
+                  number(s["last"], "tone_rmse") for s in summary.values()]
+        if min(slopes) > -0.45 or max(slopes) > -0.4:
+            text += (" It is shallower for two reasons: the tone map is bounded and "
+                     "compressive, so the large errors of images of a few samples are "
+                     "clipped and the early points lie low (the −0.5 rate holds only once "
+                     "the noise is small against the tone curve's bend); and at the last "
+                     "point the reference's own tone noise is "
+                     f"{100 * min(shares):.0f}–{100 * max(shares):.0f} % of the error, "
+                     "adding in quadrature.")
+    reading.append(text)
+    bullets = []
+    for name in off_rate:
+        s = summary[name]
+        reasons = []
+        if s["per_sample_growth"] > 1.5:
+            reasons.append(
+                f"relMSE·spp grows {fmt(s['per_sample_growth'], 2)}× over the fit: the "
+                "error is heavy-tailed, dominated by rare bright paths (fireflies) that a "
+                "short run has not met yet, so the early points lie below the trend and "
+                "the fitted slope is shallower than −1 although each pixel's variance "
+                "still falls as 1/spp")
+        elif s["per_sample_growth"] < 0.67:
+            reasons.append(
+                f"relMSE·spp falls {fmt(1 / s['per_sample_growth'], 2)}× over the fit: "
+                "a few early fireflies dominate the first points and average away later")
+        if s["floor_reached"]:
+            reasons.append("the last points approach the reference's own noise and were "
+                           "left out of the fit")
+        ratio = number(s["last"], "seconds") / int(s["last"]["spp"])
+        first_ratio = number(s["first"], "seconds") / int(s["first"]["spp"])
+        steeper_in_time = (s["slope_time"] is not None and s["slope_spp"] is not None
+                           and s["slope_time"] < s["slope_spp"] - 0.05)
+        if first_ratio > 1.5 * ratio and steeper_in_time:
+            reasons.append(
+                f"the first samples cost more per sample ({fmt(1e3 * first_ratio, 3)} ms "
+                f"against {fmt(1e3 * ratio, 3)} ms later): per-frame overhead or load on "
+                "the shared machine, which makes the slope against time steeper than "
+                "against spp")
+        if not reasons:
+            reasons.append("no single cause stands out; with one run per scene the "
+                           "fitted slope carries the noise of the error itself")
+        bullets.append(f"- {name}: slope {fmt(s['slope_time'], 2)} against time, "
+                       f"{fmt(s['slope_spp'], 2)} against spp; " + "; ".join(reasons) + ".")
+    heavy = [n for n, s in summary.items() if n in at_rate and s["per_sample_growth"] > 1.5]
+    if heavy:
+        bullets.append(
+            f"- {', '.join(heavy)}: at the rate overall, but relMSE·spp still grows "
+            "over the fit (rare bright paths, as above), so single points scatter about "
+            "the line.")
+    ratios = [s["noise_ratio"] for s in summary.values() if not math.isnan(s["noise_ratio"])]
+    if ratios:
+        bullets.append(
+            "- The default-settings renders differ from their references by noise alone: "
+            f"error ÷ noise has medians between {fmt(min(ratios), 2)} and "
+            f"{fmt(max(ratios), 2)} across scenes (1 expected). With the settings that made "
+            "the reference, no bias can show in this curve; it flattens only on the "
+            "reference's own noise (the red line). The default settings' own bias against "
+            "the true image is what the settings sweep below measures.")
+    reading.append("\n".join(bullets))
 
-    # Equal time
-    if equal_time:
-        plot_equal_time(equal_time, data, "equal_time.png", all_names)
-        budgets = sorted({number(r, "budget_seconds") for r in equal_time})
-        first = equal_time[0]
-        out.append("## Equal time: error reached in a time budget\n")
-        out.append(
-            f"Default settings at {first['width']}x{first['height']}; one run per scene renders "
-            "until each budget and is measured there (the clock pauses while it is measured). "
-            "A frame still drawing when the budget runs out is dropped, so 'used' can be a "
-            "little under the budget, or a little over it when a frame of one band ended just "
-            "after it.\n")
-        lookup = {(r["scene"], number(r, "budget_seconds")): r for r in equal_time}
-        header = ["scene"]
+    return out, reading
+
+
+def equal_time_section(equal_time, data, image, all_names):
+    """Error reached in each time budget; returns the page's lines and the reading's paragraphs."""
+    out, reading = [], []
+    plot_equal_time(equal_time, data, "equal_time.png", all_names)
+    budgets = sorted({number(r, "budget_seconds") for r in equal_time})
+    first = equal_time[0]
+    out.append("## Equal time: error reached in a time budget\n")
+    out.append(
+        f"Default settings at {first['width']}x{first['height']}; one run per scene renders "
+        "until each budget and is measured there (the clock pauses while it is measured). "
+        "A frame still drawing when the budget runs out is dropped, so 'used' can be a "
+        "little under the budget, or a little over it when a frame of one band ended just "
+        "after it.\n")
+    lookup = {(r["scene"], number(r, "budget_seconds")): r for r in equal_time}
+    header = ["scene"]
+    for b in budgets:
+        header += [f"{fmt(b)} s: spp (used s)", "relative MSE", "tone RMSE"]
+    body = []
+    for name in scene_order(equal_time):
+        row = [name]
         for b in budgets:
-            header += [f"{fmt(b)} s: spp (used s)", "relative MSE", "tone RMSE"]
-        body = []
-        for name in scene_order(equal_time):
-            row = [name]
-            for b in budgets:
-                r = lookup.get((name, b))
-                if r is None:
-                    row += ["–", "–", "–"]
-                else:
-                    row += [f"{r['spp']} ({fmt(number(r, 'seconds'), 3)})",
-                            fmt(number(r, "rel_mse")), fmt(number(r, "tone_rmse"))]
-            body.append(row)
-        out.append(table(header, body))
-        out.append("")
-        out.append(f"![error reached in equal time]({image('equal_time.png')})\n")
-        worst = max(scene_order(equal_time),
-                    key=lambda n: number(lookup[(n, budgets[-1])], "rel_mse")
-                    if (n, budgets[-1]) in lookup else -1)
-        best = min(scene_order(equal_time),
-                   key=lambda n: number(lookup[(n, budgets[-1])], "rel_mse")
-                   if (n, budgets[-1]) in lookup else math.inf)
-        reading.append(
-            f"**Equal time.** After {fmt(budgets[-1])} s the cleanest scene is {best} "
-            f"(relative MSE {fmt(number(lookup[(best, budgets[-1])], 'rel_mse'))}, "
-            f"{lookup[(best, budgets[-1])]['spp']} spp) and the noisiest {worst} "
-            f"({fmt(number(lookup[(worst, budgets[-1])], 'rel_mse'))}, "
-            f"{lookup[(worst, budgets[-1])]['spp']} spp)." + equal_time_slopes(equal_time))
+            r = lookup.get((name, b))
+            if r is None:
+                row += ["–", "–", "–"]
+            else:
+                row += [f"{r['spp']} ({fmt(number(r, 'seconds'), 3)})",
+                        fmt(number(r, "rel_mse")), fmt(number(r, "tone_rmse"))]
+        body.append(row)
+    out.append(table(header, body))
+    out.append("")
+    out.append(f"![error reached in equal time]({image('equal_time.png')})\n")
+    worst = max(scene_order(equal_time),
+                key=lambda n: number(lookup[(n, budgets[-1])], "rel_mse")
+                if (n, budgets[-1]) in lookup else -1)
+    best = min(scene_order(equal_time),
+               key=lambda n: number(lookup[(n, budgets[-1])], "rel_mse")
+               if (n, budgets[-1]) in lookup else math.inf)
+    reading.append(
+        f"**Equal time.** After {fmt(budgets[-1])} s the cleanest scene is {best} "
+        f"(relative MSE {fmt(number(lookup[(best, budgets[-1])], 'rel_mse'))}, "
+        f"{lookup[(best, budgets[-1])]['spp']} spp) and the noisiest {worst} "
+        f"({fmt(number(lookup[(worst, budgets[-1])], 'rel_mse'))}, "
+        f"{lookup[(worst, budgets[-1])]['spp']} spp)." + equal_time_slopes(equal_time))
 
-    # Settings
-    if settings:
-        first = settings[0]
-        out.append("## Accuracy settings: what each one buys and costs\n")
-        out.append(
-            f"Each setting is varied alone from the defaults; every render has "
-            f"{first['spp']} spp at {first['width']}x{first['height']} and is compared with the "
-            "**default-settings** reference. So the error of a non-default value, where it "
-            "stands above the noise, is how far that value's image is from the default's: the "
-            "bias the change introduces. For settings whose default is itself an approximation "
-            "(hit tolerance, Schlick's Fresnel), the value closer to exact measures the "
-            "default's own bias. Time is CPU milliseconds per sample per pixel over the whole "
-            "image (wall milliseconds in brackets). Marks: **bias** = visible bias (see above); "
-            "**same** = the image is bit for bit the default's (the setting does nothing in "
-            "this scene; its time differs from the default's only by the machine's noise).\n")
-        timing_noise = []
-        digests = {}
-        for setting in settings_order(settings):
-            points = setting_rows(settings, setting)
-            filename = plot_setting(settings, setting, data)
-            labels = []
-            for row in points:
-                if row["label"] not in labels:
-                    labels.append(row["label"])
-            out.append(f"### {setting}\n")
-            out.append(SETTING_NOTES.get(setting, "") + "\n")
-            lookup = {(r["scene"], r["label"]): r for r in points}
-            header = ["scene", "noise"]
+    return out, reading
+
+
+def settings_section(settings, data, image):
+    """Each accuracy setting varied alone; returns the page's lines and the reading's paragraphs."""
+    out, reading = [], []
+    first = settings[0]
+    out.append("## Accuracy settings: what each one buys and costs\n")
+    out.append(
+        f"Each setting is varied alone from the defaults; every render has "
+        f"{first['spp']} spp at {first['width']}x{first['height']} and is compared with the "
+        "**default-settings** reference. So the error of a non-default value, where it "
+        "stands above the noise, is how far that value's image is from the default's: the "
+        "bias the change introduces. For settings whose default is itself an approximation "
+        "(hit tolerance, Schlick's Fresnel), the value closer to exact measures the "
+        "default's own bias. Time is CPU milliseconds per sample per pixel over the whole "
+        "image (wall milliseconds in brackets). Marks: **bias** = visible bias (see above); "
+        "**same** = the image is bit for bit the default's (the setting does nothing in "
+        "this scene; its time differs from the default's only by the machine's noise).\n")
+    timing_noise = []
+    digests = {}
+    for setting in settings_order(settings):
+        points = setting_rows(settings, setting)
+        filename = plot_setting(settings, setting, data)
+        labels = []
+        for row in points:
+            if row["label"] not in labels:
+                labels.append(row["label"])
+        out.append(f"### {setting}\n")
+        out.append(SETTING_NOTES.get(setting, "") + "\n")
+        lookup = {(r["scene"], r["label"]): r for r in points}
+        header = ["scene", "noise"]
+        for label in labels:
+            defaults = [r for r in points if r["label"] == label and r["is_default"] == "1"]
+            header.append(f"{label} (default)" if defaults else label)
+        time_body, error_body = [], []
+        for name in scene_order(points):
+            default = default_row(settings, name)
+            time_row, error_row = [name, ""], [name, fmt(noise_of(default))]
             for label in labels:
-                defaults = [r for r in points if r["label"] == label and r["is_default"] == "1"]
-                header.append(f"{label} (default)" if defaults else label)
-            time_body, error_body = [], []
-            for name in scene_order(points):
-                default = default_row(settings, name)
-                time_row, error_row = [name, ""], [name, fmt(noise_of(default))]
-                for label in labels:
-                    r = lookup.get((name, label))
-                    if r is None:
-                        time_row.append("–")
-                        error_row.append("–")
-                        continue
-                    time_row.append(f"{fmt(number(r, 'cpu_ms_per_spp'))} "
-                                    f"({fmt(number(r, 'ms_per_spp'))})")
-                    verdict = judge(r)
-                    mark = {"bias": " **bias**", "same": " same", "noise": ""}[verdict]
-                    if verdict == "same":
-                        error_row.append("same")
-                        timing_noise.append(number(r, "cpu_ms_per_spp") /
-                                            number(default, "cpu_ms_per_spp"))
-                    else:
-                        error_row.append(
-                            f"{fmt(number(r, 'rel_mse'))} "
-                            f"({fmt(number(r, 'rel_mse') / noise_of(r), 2)}×; "
-                            f"{percent(number(r, 'brightness_bias'))} ± "
-                            f"{100 * number(r, 'brightness_noise'):.1f}){mark}")
-                time_body.append(time_row)
-                error_body.append(error_row)
-            time_header = ["scene", ""] + header[2:]
-            out.append("CPU ms per spp (wall ms per spp):\n")
-            out.append(table([h for i, h in enumerate(time_header) if i != 1],
-                             [[c for i, c in enumerate(row) if i != 1] for row in time_body]))
-            out.append("")
-            out.append("Relative MSE (error ÷ noise; brightness ± its noise); 'noise' is the "
-                       "default render's noise plus the reference's:\n")
-            out.append(table(header, error_body))
-            out.append("")
-            out.append(f"![{setting}]({image(filename)})\n")
+                r = lookup.get((name, label))
+                if r is None:
+                    time_row.append("–")
+                    error_row.append("–")
+                    continue
+                time_row.append(f"{fmt(number(r, 'cpu_ms_per_spp'))} "
+                                f"({fmt(number(r, 'ms_per_spp'))})")
+                verdict = judge(r)
+                mark = {"bias": " **bias**", "same": " same", "noise": ""}[verdict]
+                if verdict == "same":
+                    error_row.append("same")
+                    timing_noise.append(number(r, "cpu_ms_per_spp") /
+                                        number(default, "cpu_ms_per_spp"))
+                else:
+                    error_row.append(
+                        f"{fmt(number(r, 'rel_mse'))} "
+                        f"({fmt(number(r, 'rel_mse') / noise_of(r), 2)}×; "
+                        f"{percent(number(r, 'brightness_bias'))} ± "
+                        f"{100 * number(r, 'brightness_noise'):.1f}){mark}")
+            time_body.append(time_row)
+            error_body.append(error_row)
+        time_header = ["scene", ""] + header[2:]
+        out.append("CPU ms per spp (wall ms per spp):\n")
+        out.append(table([h for i, h in enumerate(time_header) if i != 1],
+                         [[c for i, c in enumerate(row) if i != 1] for row in time_body]))
+        out.append("")
+        out.append("Relative MSE (error ÷ noise; brightness ± its noise); 'noise' is the "
+                   "default render's noise plus the reference's:\n")
+        out.append(table(header, error_body))
+        out.append("")
+        out.append(f"![{setting}]({image(filename)})\n")
 
-            digests[setting] = setting_digest(settings, setting)
-        reading += settings_reading(settings, digests, timing_noise)
+        digests[setting] = setting_digest(settings, setting)
+    reading += settings_reading(settings, digests, timing_noise)
 
-    out.append("## Reading\n")
-    out.append("\n\n".join(reading) + "\n")
+    return out, reading
 
+
+def regenerating_section():
+    out = []
     out.append("## Regenerating\n")
     out.append(
         "```sh\n"
@@ -916,12 +935,16 @@ def write_report(args):
         "`build-accuracy/accuracy-cache/` (reused while the scene, shaders and settings are "
         "unchanged; `ACCURACY_REFRESH=1` renders them again), writes the CSVs and plots to "
         "`docs/accuracy/` and this page. Its header documents every variable.\n")
-    # The per-pixel sections (tools/per_pixel_report.py) and the target-error section
-    # (bench/target_error.py) are written by other tools; keep them, in their order, before
-    # the convergence section. The per-pixel sections' hand-written reading, when there is
-    # one, ends at its own marker.
-    if os.path.exists(args.markdown):
-        previous = open(args.markdown).read()
+    return out
+
+
+def keep_other_tools_sections(out, markdown):
+    """The per-pixel sections (tools/per_pixel_report.py) and the target-error section
+    (bench/target_error.py) are written by other tools: they are kept from the page as it was,
+    in their order, before the convergence section. The per-pixel sections' hand-written
+    reading, when there is one, ends at its own marker."""
+    if os.path.exists(markdown):
+        previous = open(markdown).read()
         kept = []
         for begin, end in (("<!-- per-pixel:begin -->", "<!-- per-pixel-reading:end -->"),
                            ("<!-- per-pixel:begin -->", "<!-- per-pixel:end -->"),
@@ -931,6 +954,39 @@ def write_report(args):
         at = next((i for i, line in enumerate(out) if line.startswith("## Convergence")),
                   len(out))
         out[at:at] = kept
+
+
+def write_report(args):
+    data = args.data_dir
+    run = {r["key"]: r["value"] for r in read_csv(os.path.join(data, "run.csv"))}
+    references = read_csv(os.path.join(data, "references.csv"))
+    convergence = read_csv(os.path.join(data, "convergence.csv"))
+    settings = read_csv(os.path.join(data, "settings.csv"))
+    equal_time = read_csv(os.path.join(data, "equal_time.csv"))
+    relative_plots = os.path.relpath(data, os.path.dirname(os.path.abspath(args.markdown)))
+    image = lambda name: f"{relative_plots}/{name}"  # noqa: E731
+    all_names = scene_order(convergence or settings or equal_time)
+
+    out = intro_section(args, run, relative_plots)
+    out += method_section(run, references)
+    out += references_section(references)
+    reading = []
+    if convergence:
+        lines, paragraphs = convergence_section(convergence, data, image)
+        out += lines
+        reading += paragraphs
+    if equal_time:
+        lines, paragraphs = equal_time_section(equal_time, data, image, all_names)
+        out += lines
+        reading += paragraphs
+    if settings:
+        lines, paragraphs = settings_section(settings, data, image)
+        out += lines
+        reading += paragraphs
+    out.append("## Reading\n")
+    out.append("\n\n".join(reading) + "\n")
+    out += regenerating_section()
+    keep_other_tools_sections(out, args.markdown)
     with open(args.markdown, "w") as file:
         file.write("\n".join(out))
 
