@@ -95,15 +95,16 @@ TEST(PigmentDispatcher, EveryKindButTheFallbackIsColouredByItsCodeUnderItsSwitch
     ASSERT_FALSE(color.empty());
     const auto& pigments = pigmentDescriptions();
     const std::string arguments = "(pigment, p, n, footprint, offSurface)";
+    EXPECT_NE(color.find("    vec3 color = " + (pigments.front().glslFunction + arguments) + ";"),
+              std::string::npos)
+        << "the fallback is not the colour every other kind replaces:\n" << color;
     for (std::size_t i = 1; i < pigments.size(); ++i)
-        EXPECT_NE(color.find(guardedCase(pigments[i].featureSwitch,
-                                         "kind == " + codeName(pigments[i]),
-                                         pigments[i].glslFunction + arguments)),
+        EXPECT_NE(color.find(std::string("#if ") + pigments[i].featureSwitch + "\n    if (kind == " +
+                             codeName(pigments[i]) + ")\n        color = " +
+                             pigments[i].glslFunction + arguments + ";\n#endif\n"),
                   std::string::npos)
             << pigments[i].keyword << " in\n" << color;
-    EXPECT_NE(color.find("    return " + (pigments.front().glslFunction + arguments) + ";\n}"),
-              std::string::npos)
-        << "the fallback is not the last, unconditional answer:\n" << color;
+    EXPECT_NE(color.find("    return color;\n}"), std::string::npos) << color;
 }
 
 }  // namespace
