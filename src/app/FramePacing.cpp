@@ -12,6 +12,17 @@ int samplesPerFrameFor(double targetFrameSeconds, double secondsPerSample, int m
     return std::max(1, static_cast<int>(samples));
 }
 
+SamplesPerFrame::SamplesPerFrame(int initial, bool given, double targetFrameSeconds, int most)
+    : samples_(initial), given_(given), targetFrameSeconds_(targetFrameSeconds), most_(most)
+{
+}
+
+void SamplesPerFrame::afterFrame(int framesDrawn, double lastSecondsPerSample)
+{
+    if (!given_ && framesDrawn > 1)
+        samples_ = samplesPerFrameFor(targetFrameSeconds_, lastSecondsPerSample, most_);
+}
+
 int nextPreviewDivisor(int divisor, double lastPreviewFrameSeconds)
 {
     if (lastPreviewFrameSeconds > kSlowPreviewSeconds)

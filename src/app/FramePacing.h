@@ -9,6 +9,24 @@ namespace app {
 // more: where only a few pixels still sample, a frame of 16 would be mostly overhead.
 int samplesPerFrameFor(double targetFrameSeconds, double secondsPerSample, int most = 16);
 
+// The samples per pixel the frames of a render loop add, the one policy of the batch render
+// and the window: the user's --samples-per-frame when given; otherwise the setting's value
+// until the renderer has drawn two frames, then samplesPerFrameFor the loop's frame time and
+// the cost the last frame measured (the first frame includes code generation: no measure).
+class SamplesPerFrame {
+public:
+    SamplesPerFrame(int initial, bool given, double targetFrameSeconds, int most = 16);
+    int samples() const { return samples_; }
+    // After a frame that added samples; `framesDrawn` counts it.
+    void afterFrame(int framesDrawn, double lastSecondsPerSample);
+
+private:
+    int samples_;
+    bool given_;
+    double targetFrameSeconds_;
+    int most_;
+};
+
 // While the view changes the window shows one cheap sample per frame on a coarse grid
 // (ProgressiveRenderer::renderPreview). The grid's divisor follows the time the last such
 // frame took, drawing and showing included: one step coarser when it took longer than

@@ -98,7 +98,8 @@ bool InteractiveSession::run()
     Clock::time_point lastWatch = start;
     Clock::time_point lastEstimate = start;
     std::optional<double> relativeError;
-    int samplesPerFrame = line_.settings.samplesPerFrame;
+    SamplesPerFrame pacing(line_.settings.samplesPerFrame, line_.samplesPerFrameGiven,
+                           kTargetFrameSeconds);
     bool settingsChanged = false;
     bool reached = false;
     auto keepGoing = [&] {
@@ -145,13 +146,12 @@ bool InteractiveSession::run()
             // The view may go on changing: keep the preview, and do not spin.
             window_.waitForInput(0.01);
         } else {
-            int samples = renderer_.frames() == 0 ? 1 : samplesPerFrame;
+            // The first frame shows at once, whatever it will cost.
+            int samples = renderer_.frames() == 0 ? 1 : pacing.samples();
             if (line_.samplesPerPixel)
                 samples = std::min(samples, *line_.samplesPerPixel - renderer_.samplesPerPixel());
             if (renderer_.renderFrame(keepGoing, samples)) {
-                if (!line_.samplesPerFrameGiven && renderer_.frames() > 1)
-                    samplesPerFrame =
-                        samplesPerFrameFor(kTargetFrameSeconds, renderer_.lastSecondsPerSample());
+                pacing.afterFrame(renderer_.frames(), renderer_.lastSecondsPerSample());
                 if (rebuildStart_) {
                     char text[160];
                     std::snprintf(text, sizeof text,

@@ -190,9 +190,8 @@ int runRender(const CommandLine& commandLine)
         };
         if (errorTarget)
             errorTarget->start(renderer);
-        // Unless told, the samples per frame follow the measured cost (the first frame,
-        // which includes code generation, is not a measure).
-        int samplesPerFrame = line.settings.samplesPerFrame;
+        SamplesPerFrame pacing(line.settings.samplesPerFrame, line.samplesPerFrameGiven, 0.5,
+                               renderer.samplesAdaptively() ? kMostAdaptiveSamplesPerFrame : 16);
         while (keepGoing()) {
             if (errorTarget && (errorTarget->reached() || errorTarget->limitReached()))
                 break;
@@ -201,7 +200,7 @@ int runRender(const CommandLine& commandLine)
             if (countsUniformSamples && line.samplesPerPixel &&
                 renderer.samplesPerPixel() >= *line.samplesPerPixel)
                 break;
-            int samples = samplesPerFrame;
+            int samples = pacing.samples();
             if (countsUniformSamples && line.samplesPerPixel)
                 samples = std::min(samples, *line.samplesPerPixel - renderer.samplesPerPixel());
             if (!renderer.renderFrame(keepGoing, samples))
@@ -212,11 +211,7 @@ int runRender(const CommandLine& commandLine)
             } else {
                 progress.update(renderer.samplesPerPixel());
             }
-            if (!line.samplesPerFrameGiven && renderer.frames() > 1)
-                samplesPerFrame = samplesPerFrameFor(0.5, renderer.lastSecondsPerSample(),
-                                                     renderer.samplesAdaptively()
-                                                         ? kMostAdaptiveSamplesPerFrame
-                                                         : 16);
+            pacing.afterFrame(renderer.frames(), renderer.lastSecondsPerSample());
         }
         // Exactly --spp samples in every pixel, also where a frame's loop budget left one
         // short (ProgressiveRenderer::renderFrame), or an interrupted render resumed did.

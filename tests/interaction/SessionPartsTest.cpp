@@ -129,6 +129,34 @@ TEST(FramePacing, SamplesPerFrameAimAtTheTargetTimeWithinOneToSixteen)
     EXPECT_EQ(app::samplesPerFrameFor(0.15, 0.0), 16);
 }
 
+// The first frame includes code generation, so the pacing keeps the setting's value until a
+// second frame has measured a sample's cost.
+TEST(FramePacing, SamplesPerFrameFollowTheCostFromTheSecondFrameOn)
+{
+    app::SamplesPerFrame pacing(1, false, 0.15);
+    pacing.afterFrame(1, 0.03);
+    EXPECT_EQ(pacing.samples(), 1);
+    pacing.afterFrame(2, 0.03);
+    EXPECT_EQ(pacing.samples(), 5);
+    pacing.afterFrame(3, 1e-5);
+    EXPECT_EQ(pacing.samples(), 16);
+}
+
+TEST(FramePacing, SamplesPerFrameTheUserGaveAreKept)
+{
+    app::SamplesPerFrame pacing(7, true, 0.15);
+    pacing.afterFrame(2, 0.03);
+    pacing.afterFrame(3, 1e-5);
+    EXPECT_EQ(pacing.samples(), 7);
+}
+
+TEST(FramePacing, SamplesPerFrameStayWithinTheLoopsMost)
+{
+    app::SamplesPerFrame pacing(1, false, 0.5, 1024);
+    pacing.afterFrame(2, 1e-5);
+    EXPECT_EQ(pacing.samples(), 1024);
+}
+
 TEST(FramePacing, ThePreviewGridCoarsensWhenSlowAndRefinesWhenFast)
 {
     EXPECT_EQ(app::nextPreviewDivisor(2, 0.2), 3);
