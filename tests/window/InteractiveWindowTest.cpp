@@ -64,7 +64,7 @@ protected:
     {
         if (program_.valid()) {
             try {
-                pressKey(window_, "Escape");
+                pressEscapeToClose(window_);
             } catch (const std::exception&) {
             }
             program_.wait();
@@ -166,11 +166,21 @@ protected:
     }
 
     // Closes the window with Escape and returns how the program ended.
+    // A window gone before the Escape is a failure that says how the program ended.
     ProcessResult close()
     {
-        pressKey(window_, "Escape");
-        ProcessResult result = program_.get();
-        return result;
+        try {
+            pressEscapeToClose(window_);
+        } catch (const std::exception& error) {
+            if (program_.wait_for(std::chrono::seconds(5)) != std::future_status::ready)
+                throw;
+            ProcessResult result = program_.get();
+            ADD_FAILURE() << "the window was gone before Escape (" << error.what()
+                          << "): the program " << result.describeEnd() << "\n"
+                          << result.standardOutput << result.standardError;
+            return result;
+        }
+        return program_.get();
     }
 
     bool running() const

@@ -101,6 +101,11 @@ void pressKey(unsigned long window, const std::string& keys)
     xdotool({"key", "--window", std::to_string(window), keys});
 }
 
+void pressEscapeToClose(unsigned long window)
+{
+    xdotool({"keydown", "--window", std::to_string(window), "Escape"});
+}
+
 void drag(unsigned long window, int button, int x, int y, int dx, int dy, int steps)
 {
     const std::string id = std::to_string(window);

@@ -28,8 +28,13 @@ int samplesInTitle(const std::string& title);
 // Runs xdotool with these arguments; throws when it fails.
 void xdotool(const std::vector<std::string>& arguments);
 
-// Presses and releases keys in the window ("Tab", "ctrl+s", "Escape").
+// Presses and releases keys in the window ("Tab", "ctrl+s").
 void pressKey(unsigned long window, const std::string& keys);
+
+// Presses Escape, which closes the window, and sends no release: the program closes on the
+// press, so a release could meet a window already destroyed, which xdotool reports as a
+// failure (BadWindow) though the window closed as asked.
+void pressEscapeToClose(unsigned long window);
 
 // Moves the pointer to (x, y) in the window, holds `button` (1 left, 2 middle, 3 right), moves
 // it by (dx, dy) in `steps` steps and releases it.
