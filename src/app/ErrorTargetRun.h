@@ -6,6 +6,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace app {
 
@@ -36,6 +37,10 @@ public:
     // nothing before every pixel holds the minimum.
     std::optional<double> predictedSecondsLeft() const { return predictedSecondsLeft_; }
     bool adaptive() const { return adaptive_; }
+    // The most samples the last frame added to one pixel. Under adaptive sampling a frame
+    // asked for N samples lasts as long as its busiest pixels take theirs, which stop at
+    // their shares: N alone overstates what the frame did and understates a sample's cost.
+    float mostSamplesAddedToAPixel() const { return mostSamplesAdded_; }
     const render::AdaptiveSampling& sampling() const { return sampling_; }
 
     // "error 2.31 % (target 1 %), about 14 s left", for the progress line.
@@ -46,6 +51,7 @@ public:
 
 private:
     bool judge(const render::Accumulation& accumulation);
+    void noteSamplesAdded(const render::Accumulation& accumulation);
 
     render::AdaptiveSampling sampling_;
     bool adaptive_;
@@ -54,6 +60,8 @@ private:
     ConvergenceHistory history_;
     bool reached_ = false;
     bool limitReached_ = false;
+    std::vector<float> samplesTakenBefore_;  // each pixel's, row by row, after the last frame
+    float mostSamplesAdded_ = 0.0f;
 };
 
 }  // namespace app

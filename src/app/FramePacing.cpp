@@ -17,10 +17,16 @@ SamplesPerFrame::SamplesPerFrame(int initial, bool given, double targetFrameSeco
 {
 }
 
-void SamplesPerFrame::afterFrame(int framesDrawn, double lastSecondsPerSample)
+void SamplesPerFrame::afterFrame(int framesDrawn, double lastSecondsPerSample,
+                                 std::optional<double> secondsLeft)
 {
-    if (!given_ && framesDrawn > 1)
-        samples_ = samplesPerFrameFor(targetFrameSeconds_, lastSecondsPerSample, most_);
+    if (given_ || framesDrawn <= 1)
+        return;
+    double frameSeconds = targetFrameSeconds_;
+    if (secondsLeft)
+        frameSeconds = std::min(frameSeconds, std::max(kShortestAimedFrameSeconds,
+                                                       kFrameShareOfTimeLeft * *secondsLeft));
+    samples_ = samplesPerFrameFor(frameSeconds, lastSecondsPerSample, most_);
 }
 
 int nextPreviewDivisor(int divisor, double lastPreviewFrameSeconds)

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <optional>
+
 namespace app {
 
 // Paths per pixel in the next frame so that it takes about `targetFrameSeconds`, from what
@@ -13,12 +15,24 @@ int samplesPerFrameFor(double targetFrameSeconds, double secondsPerSample, int m
 // and the window: the user's --samples-per-frame when given; otherwise the setting's value
 // until the renderer has drawn two frames, then samplesPerFrameFor the loop's frame time and
 // the cost the last frame measured (the first frame includes code generation: no measure).
+//
+// A render aimed at an error stops at the first frame that ends with the target reached, so
+// a frame longer than the time left wastes the difference (and under adaptive sampling,
+// which replans after every frame, it also carries every pixel to a share planned from an
+// older estimate). Where the time left is predicted, frames take at most kFrameShareOfTimeLeft
+// of it, and no less than kShortestAimedFrameSeconds, whose samples dwarf a frame's fixed cost
+// (the read-back and the plan).
+constexpr double kFrameShareOfTimeLeft = 0.1;
+constexpr double kShortestAimedFrameSeconds = 0.05;
+
 class SamplesPerFrame {
 public:
     SamplesPerFrame(int initial, bool given, double targetFrameSeconds, int most = 16);
     int samples() const { return samples_; }
-    // After a frame that added samples; `framesDrawn` counts it.
-    void afterFrame(int framesDrawn, double lastSecondsPerSample);
+    // After a frame that added samples; `framesDrawn` counts it. `secondsLeft`: the predicted
+    // time to the render's target error, where it aims at one and a prediction is made.
+    void afterFrame(int framesDrawn, double lastSecondsPerSample,
+                    std::optional<double> secondsLeft = std::nullopt);
 
 private:
     int samples_;

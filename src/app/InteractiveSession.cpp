@@ -151,7 +151,8 @@ bool InteractiveSession::run()
             if (line_.samplesPerPixel)
                 samples = std::min(samples, *line_.samplesPerPixel - renderer_.samplesPerPixel());
             if (renderer_.renderFrame(keepGoing, samples)) {
-                pacing.afterFrame(renderer_.frames(), renderer_.lastSecondsPerSample());
+                pacing.afterFrame(renderer_.frames(), renderer_.lastSecondsPerSample(),
+                                  line_.targetError ? secondsToTarget_ : std::nullopt);
                 if (rebuildStart_) {
                     char text[160];
                     std::snprintf(text, sizeof text,

@@ -211,7 +211,18 @@ int runRender(const CommandLine& commandLine)
             } else {
                 progress.update(renderer.samplesPerPixel());
             }
-            pacing.afterFrame(renderer.frames(), renderer.lastSecondsPerSample());
+            // Under adaptive sampling a frame lasts as long as its busiest pixels sample
+            // (ErrorTargetRun::mostSamplesAddedToAPixel), and a pixel behind the frames' count
+            // may take up to twice the samples asked (ProgressiveRenderer::drawFrame), as
+            // most pixels are there: the frame's cost per sample asked is the cost of those
+            // twice as many.
+            double secondsPerSample = renderer.lastSecondsPerSample();
+            if (errorTarget && errorTarget->adaptive() &&
+                errorTarget->mostSamplesAddedToAPixel() > 0.0f)
+                secondsPerSample *=
+                    std::max(1.0, 2.0 * samples / errorTarget->mostSamplesAddedToAPixel());
+            pacing.afterFrame(renderer.frames(), secondsPerSample,
+                              errorTarget ? errorTarget->predictedSecondsLeft() : std::nullopt);
         }
         // Exactly --spp samples in every pixel, also where a frame's loop budget left one
         // short (ProgressiveRenderer::renderFrame), or an interrupted render resumed did.

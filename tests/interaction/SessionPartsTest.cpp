@@ -157,6 +157,21 @@ TEST(FramePacing, SamplesPerFrameStayWithinTheLoopsMost)
     EXPECT_EQ(pacing.samples(), 1024);
 }
 
+// A render aimed at an error stops at the first frame that ends with the target reached: a
+// frame takes at most a tenth of the time predicted to be left, and no less than 0.05 s.
+TEST(FramePacing, FramesAimedAtAnErrorTakeATenthOfThePredictedTimeLeft)
+{
+    app::SamplesPerFrame pacing(1, false, 0.5, 1024);
+    pacing.afterFrame(2, 0.001);
+    EXPECT_EQ(pacing.samples(), 500) << "no prediction: the loop's 0.5 s";
+    pacing.afterFrame(3, 0.001, 2.0);
+    EXPECT_EQ(pacing.samples(), 200) << "0.2 s of the 2 s left";
+    pacing.afterFrame(4, 0.001, 0.1);
+    EXPECT_EQ(pacing.samples(), 50) << "never below 0.05 s";
+    pacing.afterFrame(5, 0.001, 60.0);
+    EXPECT_EQ(pacing.samples(), 500) << "never above the loop's own frame time";
+}
+
 TEST(FramePacing, ThePreviewGridCoarsensWhenSlowAndRefinesWhenFast)
 {
     EXPECT_EQ(app::nextPreviewDivisor(2, 0.2), 3);
