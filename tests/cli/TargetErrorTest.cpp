@@ -154,22 +154,32 @@ solid 0 0 0
                                       "--min-spp", "24", "--quiet", "--output", "target.exr"});
     ASSERT_TRUE(result.exited && result.exitStatus == 0) << describe(result);
     const render::Accumulation held = accumulation("target.exr");
-    int blackPixels = 0;
+    auto black = [&held](int x, int y) {
+        return held.estimate.at(x, y, 0) == 0.0f && held.estimate.at(x, y, 1) == 0.0f &&
+               held.estimate.at(x, y, 2) == 0.0f;
+    };
+    // A pixel plans as the noisier of itself and its 3x3 neighbourhood (AdaptiveSampling.h):
+    // the sky beside the floor's edge samples on; the sky among sky stops at the minimum.
+    auto amongBlack = [&held, &black](int x, int y) {
+        for (int ny = std::max(0, y - 1); ny <= std::min(held.height() - 1, y + 1); ++ny)
+            for (int nx = std::max(0, x - 1); nx <= std::min(held.width() - 1, x + 1); ++nx)
+                if (!black(nx, ny))
+                    return false;
+        return true;
+    };
+    int quietPixels = 0;
     float most = 0.0f;
     for (int y = 0; y < held.height(); ++y)
         for (int x = 0; x < held.width(); ++x) {
             const float samples = held.samplesTaken(x, y);
             EXPECT_GE(samples, 24.0f) << "pixel " << x << ", " << y;
             most = std::max(most, samples);
-            const bool black = held.estimate.at(x, y, 0) == 0.0f &&
-                               held.estimate.at(x, y, 1) == 0.0f &&
-                               held.estimate.at(x, y, 2) == 0.0f;
-            if (black) {
-                ++blackPixels;
+            if (amongBlack(x, y)) {
+                ++quietPixels;
                 EXPECT_EQ(samples, 24.0f) << "the noiseless sky at " << x << ", " << y;
             }
         }
-    EXPECT_GT(blackPixels, 48 * 12) << "the scene's sky should fill the top rows";
+    EXPECT_GT(quietPixels, 48 * 10) << "the scene's sky should fill the top rows";
     EXPECT_GE(most, 8 * 24.0f) << "the noisy pixels should have taken far more";
 }
 
