@@ -185,6 +185,56 @@ bool exactCappedCylinder(vec3 origin, vec3 direction, vec3 center, float radius,
     return exactConvexSolid(interval, tMin, object, hit);
 }
 
+// Infinite cone with its apex at `apex` and its axis along y, the solid where
+// dot(unitSlope, (|q.xz|, q.y)) < 0 for q = p - apex (sdConeBound). Its surface is the nappe
+// of a^2 |q.xz|^2 = b^2 q.y^2 on which a |q.xz| = -b q.y; the quadratic's roots on the other
+// nappe, where a |q.xz| = b q.y, are no crossing. The normal is the gradient of the bound,
+// unit wherever |q.xz| > 0.
+bool exactCone(vec3 origin, vec3 direction, vec3 apex, vec2 unitSlope, float tMin, int object,
+               inout ExactHit hit)
+{
+    vec3 q = origin - apex;
+    float a2 = unitSlope.x * unitSlope.x;
+    float b2 = unitSlope.y * unitSlope.y;
+    float quadratic = a2 * dot(direction.xz, direction.xz) - b2 * direction.y * direction.y;
+    float halfLinear = a2 * dot(q.xz, direction.xz) - b2 * q.y * direction.y;
+    float constant = a2 * dot(q.xz, q.xz) - b2 * q.y * q.y;
+    float first;
+    float second;
+    float discriminant = halfLinear * halfLinear - quadratic * constant;
+    if (discriminant < 0.0)
+        return false;
+    // The root that does not cancel, and the other from the product of the roots; a ray
+    // parallel to one of the cone's lines (no quadratic term) crosses it once.
+    float k = -(halfLinear + (halfLinear >= 0.0 ? sqrt(discriminant) : -sqrt(discriminant)));
+    if (abs(quadratic) > 1e-7 * abs(k)) {
+        first = k / quadratic;
+        second = k != 0.0 ? constant / k : first;
+    } else if (k != 0.0) {
+        first = second = constant / k;
+    } else {
+        return false;
+    }
+    float near = min(first, second);
+    float far = max(first, second);
+    for (int root = 0; root < 2; ++root) {
+        float t = root == 0 ? near : far;
+        if (!(t > tMin && t < hit.t))
+            continue;
+        vec3 at = q + t * direction;
+        float radial = length(at.xz);
+        if (abs(unitSlope.x * radial + unitSlope.y * at.y) >
+            abs(unitSlope.x * radial - unitSlope.y * at.y))
+            continue;
+        vec2 outward = radial > 0.0 ? at.xz / radial : vec2(0.0);
+        hit = ExactHit(t, object,
+                       normalize(vec3(unitSlope.x * outward.x, unitSlope.y,
+                                      unitSlope.x * outward.y)));
+        return true;
+    }
+    return false;
+}
+
 // Disk (centre, radius) = vec4 with unit normal n: the ray's crossing of its plane, if it is
 // within the radius. It faces the ray.
 bool exactDisk(vec3 origin, vec3 direction, vec4 disk, vec3 normal, float tMin, int object,

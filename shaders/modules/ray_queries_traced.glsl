@@ -56,8 +56,9 @@ int nearestExcludedSphereLight(vec3 origin, vec3 direction, float start, out flo
 SurfaceHit findSurface(vec3 origin, vec3 direction, float insideSign, RayCone cone,
                        float start, int containing)
 {
-    // Polyhedra and spheres are met exactly (the culled distances the march evaluates leave
-    // them out): the march ends where the ray crosses one. A ray inside a solid can only leave
+    // Top-level shapes with a closed form (polyhedra, spheres, boxes, cylinders, disks, cones)
+    // are met exactly (the culled distances the march evaluates leave them out): the march
+    // ends where the ray crosses one. A ray inside a solid can only leave
     // it: inside one met exactly, its exit is the answer and nothing is marched; inside a
     // marched one, no exact crossing counts. `start` only says where marched objects may begin
     // (the camera's cone march leaves the exact ones out too): an exact one may be crossed
@@ -238,7 +239,7 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
     float maxDistance = distance - along;
     vec3 transmittance = vec3(1.0);
     RayCulling culling = sceneRayCulling(origin, wi, tolerance, 0.0);
-    // Polyhedra and spheres, which marches leave out, block where the segment crosses one;
+    // Shapes met exactly, which marches leave out, block where the segment crosses one;
     // index-1 ones only tint, and are passed one crossing after another.
     float from = 0.0;
     for (int crossing = 0; crossing < kMaxShadowCrossings && loopIterationAllowed();

@@ -115,15 +115,19 @@ bool objectInMask(int object, uint mask)
     return object >= 32 || (mask & (1u << uint(object))) != 0u;
 }
 
-// An object that is one polyhedron or one sphere (not a light), untransformed: rays meet it
-// by exact intersection (exactSurfacesIntersect), so the culled forms, which rays march,
-// leave it out.
+// An object that is one untransformed shape with a closed-form intersection (a polyhedron, a
+// sphere that is not a light, a box, a capped cylinder, a disk or a cone): rays meet it by exact
+// intersection (exactSurfacesIntersect), so the culled forms, which rays march, leave it
+// out. The specialised shader meets transformed ones exactly too.
 bool isExactObject(int object)
 {
     int start = objectShapeProgramStart(object);
     ivec4 first = uShapeProgram[start];
     bool single = first.x == OPCODE_PRIMITIVE && uShapeProgram[start + 1].x == OPCODE_END;
-    return single && (first.y == PRIMITIVE_POLYHEDRON ||
+    bool boundedClosedForm = first.y == PRIMITIVE_BOX || first.y == PRIMITIVE_CYLINDER ||
+                             first.y == PRIMITIVE_DISK;
+    return single && (first.y == PRIMITIVE_POLYHEDRON || first.y == PRIMITIVE_CONE ||
+                      (boundedClosedForm && EXACT_BOXES_CYLINDERS_AND_DISKS != 0) ||
                       (first.y == PRIMITIVE_SPHERE && objectSphereLight(object) < 0));
 }
 
@@ -133,14 +137,28 @@ void exactSurfacesIntersect(vec3 origin, vec3 direction, float tMin, int only, i
         if (!isExactObject(object) || (only >= 0 && object != only))
             continue;
         ivec4 primitive = uShapeProgram[objectShapeProgramStart(object)];
+        vec4 first = uShapeParameters[primitive.z];
         if (primitive.y == PRIMITIVE_SPHERE) {
-            exactSphere(origin, direction, uShapeParameters[primitive.z], tMin, object, hit);
-            continue;
+            exactSphere(origin, direction, first, tMin, object, hit);
+        } else if (primitive.y == PRIMITIVE_BOX) {
+            exactBox(origin, direction, first.xyz, uShapeParameters[primitive.z + 1].xyz, tMin,
+                     object, hit);
+        } else if (primitive.y == PRIMITIVE_CYLINDER) {
+            exactCappedCylinder(origin, direction, first.xyz, first.w,
+                                uShapeParameters[primitive.z + 1].x, tMin, object, hit);
+        } else if (primitive.y == PRIMITIVE_CONE) {
+            exactCone(origin, direction, first.xyz, uShapeParameters[primitive.z + 1].xy, tMin,
+                      object, hit);
+        } else if (primitive.y == PRIMITIVE_DISK) {
+            exactDisk(origin, direction, first, uShapeParameters[primitive.z + 1].xyz, tMin,
+                      object, hit);
+        } else {
+            ConvexInterval outside = wholeRay();
+            for (int plane = 0; plane < primitive.w && loopIterationAllowed(); ++plane)
+                clipOutsideHalfSpace(outside, origin, direction,
+                                     uShapeParameters[primitive.z + plane]);
+            exactHalfSpaceUnion(outside, tMin, object, hit);
         }
-        ConvexInterval outside = wholeRay();
-        for (int plane = 0; plane < primitive.w && loopIterationAllowed(); ++plane)
-            clipOutsideHalfSpace(outside, origin, direction, uShapeParameters[primitive.z + plane]);
-        exactHalfSpaceUnion(outside, tMin, object, hit);
     }
 }
 

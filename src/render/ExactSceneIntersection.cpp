@@ -1,6 +1,5 @@
 #include "render/ExactSceneIntersection.h"
 
-#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -10,135 +9,133 @@ using namespace scene;
 
 namespace {
 
-class ExactIntersectionWriter {
-public:
-    explicit ExactIntersectionWriter(std::vector<glm::vec4>& parameters) : parameters_(parameters)
-    {
-    }
+std::string slot(int index)
+{
+    return "uShapeParameters[" + std::to_string(index) + "]";
+}
 
-    void object(const Scene& scene, std::size_t index)
-    {
-        const SceneObject& object = scene.objects[index];
-        const Geometry& geometry = object.shape.geometry;
-        const std::optional<Transform>& transform = object.shape.transform;
-        const std::string id = std::to_string(index);
-        if (const auto* sphere = std::get_if<Sphere>(&geometry)) {
-            const glm::vec3 center = transform ? applyTransform(*transform, sphere->center)
-                                               : sphere->center;
-            const float radius = transform ? transform->scale * sphere->radius : sphere->radius;
-            out_ << "    exactSphere(origin, direction, " << slot(allocate({glm::vec4(center, radius)}))
-                 << ", tMin, " << id << ", hit);\n";
-        } else if (const auto* polyhedron = std::get_if<Polyhedron>(&geometry)) {
-            out_ << "    {\n        ConvexInterval outside = wholeRay();\n";
-            for (const glm::vec4& plane : polyhedron->planes) {
-                const glm::vec4 unit = plane / glm::length(glm::vec3(plane));
-                const glm::vec4 world = transform ? applyTransformToPlane(*transform, unit) : unit;
-                out_ << "        clipOutsideHalfSpace(outside, origin, direction, "
-                     << slot(allocate({world})) << ");\n";
-            }
-            out_ << "        exactHalfSpaceUnion(outside, tMin, " << id << ", hit);\n    }\n";
-        } else if (const auto* disk = std::get_if<Disk>(&geometry)) {
-            glm::vec3 center = disk->center;
-            glm::vec3 normal = glm::normalize(disk->normal);
-            float radius = disk->radius;
-            if (transform) {
-                center = applyTransform(*transform, center);
-                normal = transform->rotation * normal;
-                radius *= transform->scale;
-            }
-            const int s = allocate({glm::vec4(center, radius), glm::vec4(normal, 0.0f)});
-            out_ << "    exactDisk(origin, direction, " << slot(s) << ", " << slot(s + 1)
-                 << ".xyz, tMin, " << id << ", hit);\n";
-        } else if (const auto* box = std::get_if<Box>(&geometry)) {
-            const int s = allocate({glm::vec4(box->center, 0.0f), glm::vec4(box->halfExtents, 0.0f)});
-            inFrame(transform, "exactBox(o, d, " + slot(s) + ".xyz, " + slot(s + 1) + ".xyz, ", id);
-        } else if (const auto* cylinder = std::get_if<Cylinder>(&geometry)) {
-            const int s = allocate({glm::vec4(cylinder->center, cylinder->radius),
-                                    glm::vec4(cylinder->halfHeight, 0.0f, 0.0f, 0.0f)});
-            inFrame(transform,
-                    "exactCappedCylinder(o, d, " + slot(s) + ".xyz, " + slot(s) + ".w, " +
-                        slot(s + 1) + ".x, ",
-                    id);
-        } else {
-            throw std::runtime_error(
-                scene.sourcePath.string() + ":" + std::to_string(object.line) +
-                ": --exact-geometry intersects spheres, polyhedra, boxes, cylinders and disks "
-                "exactly; this object is " + shapeName(geometry) + ", which has no exact "
-                "intersection here");
-        }
-    }
+std::string shapeName(const Geometry& geometry)
+{
+    if (std::holds_alternative<Torus>(geometry))
+        return "a torus";
+    if (std::holds_alternative<UserSdf>(geometry))
+        return "the user SDF '" + std::get<UserSdf>(geometry).name + "'";
+    return "a CSG solid";
+}
 
-    std::string code() const
-    {
-        return "// Every object's first crossing in (tMin, hit.t), exactly (exact_shapes.glsl).\n"
-               "void exactSceneIntersect(vec3 origin, vec3 direction, float tMin, "
-               "inout ExactHit hit)\n{\n" +
-               out_.str() + "}\n";
+// A shape intersected in its own frame: the ray is taken there (a similarity keeps it a ray,
+// with distances divided by the scale), the hit brought back. `callHead` is the call up to
+// its tMin argument.
+std::string inFrame(const std::optional<Transform>& transform, const std::string& callHead,
+                    const std::string& id, const ShapeParameterAllocator& allocate)
+{
+    std::ostringstream out;
+    if (!transform) {
+        out << "    {\n        vec3 o = origin;\n        vec3 d = direction;\n        "
+            << callHead << "tMin, " << id << ", hit);\n    }\n";
+        return out.str();
     }
-
-private:
-    static std::string slot(int index)
-    {
-        return "uShapeParameters[" + std::to_string(index) + "]";
-    }
-
-    static std::string shapeName(const Geometry& geometry)
-    {
-        if (std::holds_alternative<Torus>(geometry))
-            return "a torus";
-        if (std::holds_alternative<Cone>(geometry))
-            return "a cone";
-        if (std::holds_alternative<UserSdf>(geometry))
-            return "the user SDF '" + std::get<UserSdf>(geometry).name + "'";
-        return "a CSG solid";
-    }
-
-    int allocate(std::initializer_list<glm::vec4> values)
-    {
-        const int first = static_cast<int>(parameters_.size());
-        parameters_.insert(parameters_.end(), values);
-        return first;
-    }
-
-    // A shape intersected in its own frame: the ray is taken there (a similarity keeps it a
-    // ray, with distances divided by the scale), the hit brought back.
-    void inFrame(const std::optional<Transform>& transform, const std::string& callHead,
-                 const std::string& id)
-    {
-        if (!transform) {
-            out_ << "    {\n        vec3 o = origin;\n        vec3 d = direction;\n        "
-                 << callHead << "tMin, " << id << ", hit);\n    }\n";
-            return;
-        }
-        const Transform& t = *transform;
-        const int frame = allocate({glm::vec4(t.rotation[0], 0.0f), glm::vec4(t.rotation[1], 0.0f),
-                                    glm::vec4(t.rotation[2], 0.0f),
-                                    glm::vec4(t.translation, t.scale)});
-        const std::string f = std::to_string(frame);
-        out_ << "    {\n"
-             << "        float scale = " << slot(frame + 3) << ".w;\n"
-             << "        vec3 o = toLocalPoint(origin, " << f << ");\n"
-             << "        vec3 d = toLocalDirection(direction, " << f << ");\n"
-             << "        ExactHit local = ExactHit(hit.t / scale, hit.object, hit.normal);\n"
-             << "        if (" << callHead << "tMin / scale, " << id << ", local))\n"
-             << "            hit = ExactHit(local.t * scale, local.object, toWorldDirection(local.normal, "
-             << f << "));\n"
-             << "    }\n";
-    }
-
-    std::vector<glm::vec4>& parameters_;
-    std::ostringstream out_;
-};
+    const Transform& t = *transform;
+    const int frame = allocate({glm::vec4(t.rotation[0], 0.0f), glm::vec4(t.rotation[1], 0.0f),
+                                glm::vec4(t.rotation[2], 0.0f), glm::vec4(t.translation, t.scale)});
+    const std::string f = std::to_string(frame);
+    out << "    {\n"
+        << "        float scale = " << slot(frame + 3) << ".w;\n"
+        << "        vec3 o = toLocalPoint(origin, " << f << ");\n"
+        << "        vec3 d = toLocalDirection(direction, " << f << ");\n"
+        << "        ExactHit local = ExactHit(hit.t / scale, hit.object, hit.normal);\n"
+        << "        if (" << callHead << "tMin / scale, " << id << ", local))\n"
+        << "            hit = ExactHit(local.t * scale, local.object, toWorldDirection(local.normal, "
+        << f << "));\n"
+        << "    }\n";
+    return out.str();
+}
 
 }  // namespace
+
+std::optional<std::string> exactIntersectionStatements(const Shape& shape, std::size_t object,
+                                                       const ShapeParameterAllocator& allocate)
+{
+    const Geometry& geometry = shape.geometry;
+    const std::optional<Transform>& transform = shape.transform;
+    const std::string id = std::to_string(object);
+    std::ostringstream out;
+    if (const auto* sphere = std::get_if<Sphere>(&geometry)) {
+        // A similarity keeps a sphere a sphere: it is met in world space.
+        const glm::vec3 center =
+            transform ? applyTransform(*transform, sphere->center) : sphere->center;
+        const float radius = transform ? transform->scale * sphere->radius : sphere->radius;
+        out << "    exactSphere(origin, direction, " << slot(allocate({glm::vec4(center, radius)}))
+            << ", tMin, " << id << ", hit);\n";
+    } else if (const auto* polyhedron = std::get_if<Polyhedron>(&geometry)) {
+        out << "    {\n        ConvexInterval outside = wholeRay();\n";
+        for (const glm::vec4& plane : polyhedron->planes) {
+            const glm::vec4 unit = plane / glm::length(glm::vec3(plane));
+            const glm::vec4 world = transform ? applyTransformToPlane(*transform, unit) : unit;
+            out << "        clipOutsideHalfSpace(outside, origin, direction, "
+                << slot(allocate({world})) << ");\n";
+        }
+        out << "        exactHalfSpaceUnion(outside, tMin, " << id << ", hit);\n    }\n";
+    } else if (const auto* disk = std::get_if<Disk>(&geometry)) {
+        glm::vec3 center = disk->center;
+        glm::vec3 normal = glm::normalize(disk->normal);
+        float radius = disk->radius;
+        if (transform) {
+            center = applyTransform(*transform, center);
+            normal = transform->rotation * normal;
+            radius *= transform->scale;
+        }
+        const int s = allocate({glm::vec4(center, radius), glm::vec4(normal, 0.0f)});
+        out << "    exactDisk(origin, direction, " << slot(s) << ", " << slot(s + 1)
+            << ".xyz, tMin, " << id << ", hit);\n";
+    } else if (const auto* box = std::get_if<Box>(&geometry)) {
+        const int s =
+            allocate({glm::vec4(box->center, 0.0f), glm::vec4(box->halfExtents, 0.0f)});
+        out << inFrame(transform, "exactBox(o, d, " + slot(s) + ".xyz, " + slot(s + 1) + ".xyz, ",
+                       id, allocate);
+    } else if (const auto* cylinder = std::get_if<Cylinder>(&geometry)) {
+        const int s = allocate({glm::vec4(cylinder->center, cylinder->radius),
+                                glm::vec4(cylinder->halfHeight, 0.0f, 0.0f, 0.0f)});
+        out << inFrame(transform,
+                       "exactCappedCylinder(o, d, " + slot(s) + ".xyz, " + slot(s) + ".w, " +
+                           slot(s + 1) + ".x, ",
+                       id, allocate);
+    } else if (const auto* cone = std::get_if<Cone>(&geometry)) {
+        const glm::vec2 unit = glm::normalize(cone->slope);
+        const int s = allocate({glm::vec4(cone->apex, 0.0f), glm::vec4(unit, 0.0f, 0.0f)});
+        out << inFrame(transform, "exactCone(o, d, " + slot(s) + ".xyz, " + slot(s + 1) + ".xy, ",
+                       id, allocate);
+    } else {
+        return std::nullopt;
+    }
+    return out.str();
+}
 
 std::string generateExactSceneIntersection(const Scene& scene,
                                            std::vector<glm::vec4>& shapeParameters)
 {
-    ExactIntersectionWriter writer(shapeParameters);
-    for (std::size_t i = 0; i < scene.objects.size(); ++i)
-        writer.object(scene, i);
-    return writer.code();
+    const ShapeParameterAllocator allocate = [&](const std::vector<glm::vec4>& values) {
+        const int first = static_cast<int>(shapeParameters.size());
+        shapeParameters.insert(shapeParameters.end(), values.begin(), values.end());
+        return first;
+    };
+    std::string body;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        const std::optional<std::string> statements =
+            exactIntersectionStatements(object.shape, i, allocate);
+        if (!statements)
+            throw std::runtime_error(
+                scene.sourcePath.string() + ":" + std::to_string(object.line) +
+                ": --exact-geometry intersects spheres, polyhedra, boxes, cylinders, disks and "
+                "cones exactly; this object is " + shapeName(object.shape.geometry) +
+                ", which has no exact intersection here");
+        body += *statements;
+    }
+    return "// Every object's first crossing in (tMin, hit.t), exactly (exact_shapes.glsl).\n"
+           "void exactSceneIntersect(vec3 origin, vec3 direction, float tMin, "
+           "inout ExactHit hit)\n{\n" +
+           body + "}\n";
 }
 
 }  // namespace render

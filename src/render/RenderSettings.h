@@ -49,6 +49,9 @@ struct RenderSettings {
     bool exactGeometry = false;
     // Count work instead of light (ShaderBuild::profileCounters), for bench_throughput.
     bool profileCounters = false;
+    // March boxes, cylinders and disks (ShaderBuild::marchBoxesCylindersAndDisks), for
+    // tests of the sphere tracer against exact intersection.
+    bool marchBoxesCylindersAndDisks = false;
     std::uint64_t seed = 1;
     // Paths per pixel in one frame (one draw); the running mean is updated after each, so
     // the result is the same as that many frames of one.
@@ -67,6 +70,7 @@ inline ShaderBuild shaderBuild(const RenderSettings& settings)
                                                        : EnvironmentBinding::BuiltIn;
     build.exactGeometry = settings.exactGeometry;
     build.profileCounters = settings.profileCounters;
+    build.marchBoxesCylindersAndDisks = settings.marchBoxesCylindersAndDisks;
     return build;
 }
 

@@ -50,7 +50,7 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
 
     ShapeCompiler compiler(code.shapeParameters, code.shapeProgram);
     if (specialized) {
-        code.plan = planScene(scene, compiler);
+        code.plan = planScene(scene, compiler, build.marchBoxesCylindersAndDisks);
         code.objectCullingBits = code.plan.objectCullingBits;
         code.marchesAnything = code.plan.marchesAnything;
         code.marchedUnion = code.plan.marchedSurfaceCount >= 2;
@@ -96,6 +96,7 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
     else
         out << "#define ENVIRONMENT_KIND ENVIRONMENT_KIND_FROM_UNIFORM\n";
     define(out, "PROFILE_COUNTERS", build.profileCounters ? 1 : 0);
+    define(out, "EXACT_BOXES_CYLINDERS_AND_DISKS", build.marchBoxesCylindersAndDisks ? 0 : 1);
     // Where every object is met exactly (polyhedra, spheres, lights), no ray marches: the
     // sphere tracer's loops are left out, which llvmpipe would otherwise run once per ray
     // with no pixel in them.

@@ -79,6 +79,11 @@ struct ShaderBuild {
     // segments) and accumulates those counts instead of radiance: bench_throughput reads
     // them.
     bool profileCounters = false;
+    // Boxes, capped cylinders and disks are marched instead of met exactly, as before the
+    // renderer met them exactly: only so that the sphere tracer's handling of silhouettes,
+    // edges and contacts can still be judged against exact intersection on shapes that
+    // have one (tests/render/EdgeBiasTest.cpp), and what meeting them exactly saves measured.
+    bool marchBoxesCylindersAndDisks = false;
 };
 
 SceneShaderCode generateSceneShaderCode(const scene::Scene& scene, const ShaderBuild& build = {});

@@ -1,5 +1,6 @@
 #include "render/SceneShaderPlan.h"
 
+#include "render/ExactSceneIntersection.h"
 #include "scene/SceneBounds.h"
 
 #include <map>
@@ -8,41 +9,18 @@ namespace render {
 
 using namespace scene;
 
-namespace {
-
-// A plane n.x + w <= 0 (unit n) of a shape's local space, in world space.
-glm::vec4 worldPlane(const glm::vec4& localPlane, const std::optional<Transform>& transform)
-{
-    return transform ? applyTransformToPlane(*transform, localPlane) : localPlane;
-}
-
-// The half-space an infinite cone lies in, scaled by how much slower than the distance to
-// that plane the cone's distance bound dot((a, b), (|p.xz|, p.y)) may grow: the cone opens
-// downwards (b > 0) below its apex, upwards (b < 0) above it. None when it opens wider
-// than a half-space (a < 0) or is flat.
-std::optional<glm::vec4> coneHalfSpace(const Cone& cone, const std::optional<Transform>& transform)
-{
-    const glm::vec2 unit = glm::normalize(cone.slope);
-    if (unit.x < 0.0f || unit.y == 0.0f)
-        return std::nullopt;
-    const float side = unit.y > 0.0f ? 1.0f : -1.0f;
-    const glm::vec4 local(0.0f, side, 0.0f, -side * cone.apex.y);
-    return std::abs(unit.y) * worldPlane(local, transform);
-}
-
-}  // namespace
-
 bool worthBounding(const SceneObject& object)
 {
     return std::holds_alternative<UserSdf>(object.shape.geometry) ||
            std::holds_alternative<CsgNode>(object.shape.geometry);
 }
 
-// Top-level polyhedra (unions of half-spaces: floors, walls, rooms) and spheres are met by
-// exact intersection, so a march ends at their exact crossing and never creeps along a wall
-// or a floor seen at grazing angles, never stops short of one at a concave edge, and spends
-// no steps on them.
-ScenePlan planScene(const Scene& scene, ShapeCompiler& compiler)
+// Top-level shapes with a closed-form intersection (polyhedra: floors, walls, rooms; spheres,
+// boxes, capped cylinders, disks, cones) are met by exact intersection, so a march ends at their
+// exact crossing and never creeps along a wall or a floor seen at grazing angles, never
+// stops short of one at a concave edge, never stops near a silhouette or a contact it does
+// not meet, and spends no steps on them.
+ScenePlan planScene(const Scene& scene, ShapeCompiler& compiler, bool marchBoxesCylindersAndDisks)
 {
     ScenePlan plan;
     int nextBit = 0;
@@ -80,36 +58,33 @@ ScenePlan planScene(const Scene& scene, ShapeCompiler& compiler)
         entry.object = i;
         entry.line = object.line;
         entry.function = compiler.emitFunction(shape);
-        // Spheres likewise (but the lights with a culling bit, which rays meet exactly as
-        // lights): a ray meets a sphere where the quadratic says, its normal is the radius's
-        // direction, and its silhouette and contacts have no tolerance band.
-        const auto* sphere = std::get_if<Sphere>(&shape.geometry);
-        if (sphere && lightBits.count(i) == 0) {
-            entry.exact = true;
-            const glm::vec3 center =
-                shape.transform ? applyTransform(*shape.transform, sphere->center) : sphere->center;
-            const float radius = shape.transform ? shape.transform->scale * sphere->radius
-                                                 : sphere->radius;
-            entry.exactSphereSlot = compiler.allocateValue(glm::vec4(center, radius));
-            continue;
-        }
-        if (const auto* polyhedron = std::get_if<Polyhedron>(&shape.geometry)) {
-            entry.exact = true;
-            for (const glm::vec4& plane : polyhedron->planes) {
-                const glm::vec4 unit = plane / glm::length(glm::vec3(plane));
-                entry.exactPlaneSlots.push_back(
-                    compiler.allocateValue(worldPlane(unit, shape.transform)));
+        // Every other shape with a closed form likewise (but the sphere lights with a culling
+        // bit, which rays meet exactly as lights): a ray meets a sphere, a box, a capped
+        // cylinder, a disk or a cone where the quadratic or the slabs say, with the shape's
+        // own normal, and its silhouettes, edges and contacts have no tolerance band.
+        const bool marchedOnRequest =
+            marchBoxesCylindersAndDisks &&
+            (std::holds_alternative<Box>(shape.geometry) ||
+             std::holds_alternative<Cylinder>(shape.geometry) ||
+             std::holds_alternative<Disk>(shape.geometry));
+        if (lightBits.count(i) == 0 && !marchedOnRequest) {
+            const ShapeParameterAllocator allocate = [&](const std::vector<glm::vec4>& values) {
+                const int first = compiler.allocateValues(values);
+                for (int k = 0; k < static_cast<int>(values.size()); ++k)
+                    entry.exactSlots.push_back(first + k);
+                return first;
+            };
+            if (std::optional<std::string> statements =
+                    exactIntersectionStatements(shape, i, allocate)) {
+                entry.exact = true;
+                entry.exactIntersection = std::move(*statements);
+                continue;
             }
-            continue;
         }
+        // What is left to march is culled by its bounding ball, where it has one.
         std::optional<CullingPiece> piece;
-        const auto* cone = std::get_if<Cone>(&shape.geometry);
-        if (bound.finite) {
-            piece = CullingPiece{false, boundSlot, 0u};
-        } else if (cone) {
-            if (const auto plane = coneHalfSpace(*cone, shape.transform))
-                piece = CullingPiece{true, compiler.allocateValue(*plane), 0u};
-        }
+        if (bound.finite)
+            piece = CullingPiece{boundSlot, 0u};
         if (lightBits.count(i) == 0) {
             plan.marchesAnything = true;
             ++plan.marchedSurfaceCount;

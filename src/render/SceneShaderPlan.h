@@ -15,10 +15,10 @@
 namespace render {
 
 // A part of the scene's union that a ray is tested against before it is marched
-// (shaders/modules/ray_culling.glsl): a bounding half-space or ball in uShapeParameters, and
-// the bit that stands for it in the ray's mask.
+// (shaders/modules/ray_culling.glsl): a bounding ball in uShapeParameters, and the bit that
+// stands for it in the ray's mask. (Shapes without a bound that have a closed form, planes
+// and cones, are met exactly and never marched.)
 struct CullingPiece {
-    bool halfSpace = false;
     int slot = -1;
     std::uint32_t bit = 0;
 };
@@ -30,12 +30,13 @@ struct ObjectPlan {
     std::size_t object = 0;  // in the scene the shader is built for
     int line = 0;            // where the object starts in its scene file
     std::string function;    // its generated distance function
-    // Met by exact intersection (exactSurfacesIntersect): a top-level sphere that is not a
-    // culled light, or a polyhedron. In the full distance forms, which every point query
-    // uses; left out of the culled forms, which rays march.
+    // Met by exact intersection (exactSurfacesIntersect): a top-level shape with a closed
+    // form (render/ExactSceneIntersection.h) that is not a culled light. In the
+    // full distance forms, which every point query uses; left out of the culled forms, which
+    // rays march.
     bool exact = false;
-    int exactSphereSlot = -1;          // the sphere in world space: centre, radius
-    std::vector<int> exactPlaneSlots;  // the polyhedron's planes in world space, unit normals
+    std::string exactIntersection;  // the statements that meet it (exactIntersectionStatements)
+    std::vector<int> exactSlots;    // the parameter slots they read, in the order allocated
     // An expensive object with a bounding sphere: evaluated only where that sphere is nearer
     // than what is already known, after every cheap object. -1: evaluated everywhere.
     int boundSlot = -1;
@@ -63,7 +64,9 @@ struct ScenePlan {
 bool worthBounding(const scene::SceneObject& object);
 
 // Plans the scene's objects, emitting their distance functions into `compiler` and laying
-// out every value the plan names in its parameter array.
-ScenePlan planScene(const scene::Scene& scene, ShapeCompiler& compiler);
+// out every value the plan names in its parameter array. `marchBoxesCylindersAndDisks`:
+// see ShaderBuild.
+ScenePlan planScene(const scene::Scene& scene, ShapeCompiler& compiler,
+                    bool marchBoxesCylindersAndDisks = false);
 
 }  // namespace render

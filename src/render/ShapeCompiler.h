@@ -46,6 +46,8 @@ public:
     // --- values the scene's own code reads ---------------------------------------------------
 
     int allocateValue(const glm::vec4& value) { return allocate({value}); }
+    // Consecutive slots; the first one's index.
+    int allocateValues(const std::vector<glm::vec4>& values) { return allocate(values); }
     int allocateBound(const scene::ShapeBound& bound);
 
 private:

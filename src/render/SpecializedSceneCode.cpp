@@ -37,22 +37,10 @@ std::string boundedCondition(const ObjectPlan& object, bool culled)
 std::string exactSurfaces(const ScenePlan& plan)
 {
     std::ostringstream out;
-    for (const ObjectPlan& object : plan.objects) {
-        if (object.exactSphereSlot >= 0) {
-            out << "    if (only < 0 || only == " << object.object
-                << ")\n        exactSphere(origin, direction, "
-                << parameterSlot(object.exactSphereSlot) << ", tMin, " << object.object
-                << ", hit);\n";
-        } else if (object.exact) {
-            out << "    if (only < 0 || only == " << object.object
-                << ") {\n        ConvexInterval outside = wholeRay();\n";
-            for (const int slot : object.exactPlaneSlots)
-                out << "        clipOutsideHalfSpace(outside, origin, direction, "
-                    << parameterSlot(slot) << ");\n";
-            out << "        exactHalfSpaceUnion(outside, tMin, " << object.object
-                << ", hit);\n    }\n";
-        }
-    }
+    for (const ObjectPlan& object : plan.objects)
+        if (object.exact)
+            out << "    if (only < 0 || only == " << object.object << ") {\n"
+                << object.exactIntersection << "    }\n";
     return out.str();
 }
 
@@ -71,7 +59,7 @@ std::string specializedSceneFunctions(const ScenePlan& plan, const std::string& 
     out << "// The scene: the union of its objects. Cheap objects first, so that bounded "
            "expensive\n// ones are skipped as often as possible. The culled forms, which rays "
            "march, leave out\n// the pieces a ray's mask clears (ray_culling.glsl) and the "
-           "polyhedra and spheres,\n// which rays meet exactly (exactSurfacesIntersect).\n\n";
+           "objects rays meet\n// exactly (exactSurfacesIntersect).\n\n";
     for (const bool culled : {false, true}) {
         const std::string suffix = culled ? "Culled" : "";
         const std::string maskParameter = culled ? ", uint mask" : "";
@@ -116,8 +104,8 @@ std::string specializedSceneFunctions(const ScenePlan& plan, const std::string& 
         out << "    return d;\n}\n\n";
     }
 
-    out << "// The first crossing in (tMin, hit.t) of every top-level polyhedron and sphere, exactly\n"
-           "// (exact_shapes.glsl); of object `only` alone where it is not -1.\n"
+    out << "// The first crossing in (tMin, hit.t) of every object met exactly (exact_shapes.glsl);\n"
+           "// of object `only` alone where it is not -1.\n"
            "void exactSurfacesIntersect(vec3 origin, vec3 direction, float tMin, int only,\n"
            "                            inout ExactHit hit)\n{\n"
         << exactSurfaces(plan) << "}\n\n";
@@ -130,8 +118,7 @@ std::string specializedSceneFunctions(const ScenePlan& plan, const std::string& 
     for (const std::vector<const ObjectPlan*>* objects : {&cheap, &bounded})
         for (const ObjectPlan* object : *objects)
             if (object->culling)
-                out << "    " << (object->culling->halfSpace ? "cullByHalfSpace" : "cullByBall")
-                    << "(culling, " << object->culling->bit << "u, "
+                out << "    cullByBall(culling, " << object->culling->bit << "u, "
                     << parameterSlot(object->culling->slot)
                     << ", origin, direction, tolerance0, toleranceGrowth);\n";
     if (!plan.everyObjectCulled)

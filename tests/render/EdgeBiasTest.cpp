@@ -1,10 +1,13 @@
 // The default render against exact intersection (--exact-geometry) where sphere tracing
 // goes wrong if it goes wrong anywhere: the rim of a visible sphere light, a silhouette
 // against a wall of another brightness, a room's concave edges, and the floor around an
-// object resting on it. The silhouette and the contact are a box's: the default renderer
-// meets spheres and planes exactly, as the reference does, and marches boxes. Image-wide means cannot see these errors (they sit in a few
-// percent of the pixels), so each test compares only the pixels of its feature, found on
-// the CPU from the scene's geometry, block by block against the two images' noise.
+// object resting on it. The silhouette and the contact are a box's, which the default
+// renderer meets exactly, as the reference does (and spheres, planes, cylinders, disks and
+// cones); so that its sphere tracer, which every other shape relies on, is still judged
+// here, the traced renders march boxes (RenderSettings::marchBoxesCylindersAndDisks).
+// Image-wide means cannot see these errors (they sit in a few percent of the pixels), so
+// each test compares only the pixels of its feature, found on the CPU from the scene's
+// geometry, block by block against the two images' noise.
 //
 // The bias must stay below half the noise of a render of the test's sample count: a render
 // that counts rays passing within its hit tolerance of a surface as hits fails by far.
@@ -187,10 +190,13 @@ RenderPair renderPair(const std::string& sceneText, std::uint64_t seed)
     render::RenderSettings settings = settingsWithSeed(seed);
     settings.samplesPerFrame = 16;
     RenderPair pair;
-    if (const char* program = std::getenv("EDGE_BIAS_TRACED_PROGRAM"))
+    if (const char* program = std::getenv("EDGE_BIAS_TRACED_PROGRAM")) {
         pair.traced = renderWithOtherProgram(program, sceneText, seed);
-    else
+    } else {
+        settings.marchBoxesCylindersAndDisks = true;
         pair.traced = renderScene(scene, kWidth, kHeight, kSamples, settings);
+        settings.marchBoxesCylindersAndDisks = false;
+    }
     settings.exactGeometry = true;
     pair.exact = renderScene(scene, kWidth, kHeight, kSamples, settings);
     return pair;

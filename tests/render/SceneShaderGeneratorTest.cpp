@@ -32,21 +32,20 @@ int occurrences(const std::string& text, const std::string& pattern)
         std::sregex_iterator(text.begin(), text.end(), expression), std::sregex_iterator()));
 }
 
-// The bounding ball or half-space that stands for culling bit `bit` in the plan.
-glm::vec4 culledBound(const SceneShaderCode& code, bool halfSpace, unsigned bit)
+// The bounding ball that stands for culling bit `bit` in the plan.
+glm::vec4 culledBound(const SceneShaderCode& code, unsigned bit)
 {
     for (const render::ObjectPlan& object : code.plan.objects)
-        if (object.culling && object.culling->bit == bit && object.culling->halfSpace == halfSpace)
+        if (object.culling && object.culling->bit == bit)
             return code.shapeParameters.at(object.culling->slot);
-    throw std::runtime_error(std::string(halfSpace ? "a half-space" : "a ball") + " with bit " +
-                             std::to_string(bit) + " not planned");
+    throw std::runtime_error("no ball with bit " + std::to_string(bit) + " planned");
 }
 
-int culledObjects(const SceneShaderCode& code, bool halfSpace)
+int culledObjects(const SceneShaderCode& code)
 {
     int count = 0;
     for (const render::ObjectPlan& object : code.plan.objects)
-        count += object.culling && object.culling->halfSpace == halfSpace ? 1 : 0;
+        count += object.culling ? 1 : 0;
     return count;
 }
 
@@ -61,8 +60,9 @@ std::vector<glm::vec4> exactClipPlanes(const SceneShaderCode& code)
 {
     std::vector<glm::vec4> planes;
     for (const render::ObjectPlan& object : code.plan.objects)
-        for (const int slot : object.exactPlaneSlots)
-            planes.push_back(code.shapeParameters.at(slot));
+        if (object.exactIntersection.find("clipOutsideHalfSpace") != std::string::npos)
+            for (const int slot : object.exactSlots)
+                planes.push_back(code.shapeParameters.at(slot));
     return planes;
 }
 
@@ -101,12 +101,12 @@ TEST(RayCulling, PolyhedraAreMetByExactIntersectionInsteadOfMarched)
 
 TEST(RayCulling, FiniteObjectsAreCulledByTheirBoundingBalls)
 {
-    const SceneShaderCode code = specialized("0 0 box 0 0 0  1 2 2\n"
+    const SceneShaderCode code = specialized("0 0 torus 0 0 0  2.5 0.5\n"
                                              "0 0 torus 0 1 0  2 0.5\n",
                                              2);
-    EXPECT_EQ(culledObjects(code, false), 2);
-    expectNear(culledBound(code, false, 1), {0, 0, 0, 3});
-    expectNear(culledBound(code, false, 2), {0, 1, 0, 2.5f});
+    EXPECT_EQ(culledObjects(code), 2);
+    expectNear(culledBound(code, 1), {0, 0, 0, 3});
+    expectNear(culledBound(code, 2), {0, 1, 0, 2.5f});
 }
 
 // The spheres the exact intersection meets, in object order.
@@ -114,8 +114,8 @@ std::vector<glm::vec4> exactSpheres(const SceneShaderCode& code)
 {
     std::vector<glm::vec4> spheres;
     for (const render::ObjectPlan& object : code.plan.objects)
-        if (object.exactSphereSlot >= 0)
-            spheres.push_back(code.shapeParameters.at(object.exactSphereSlot));
+        if (object.exactIntersection.find("exactSphere(") != std::string::npos)
+            spheres.push_back(code.shapeParameters.at(object.exactSlots.at(0)));
     return spheres;
 }
 
@@ -127,7 +127,7 @@ TEST(RayCulling, SpheresAreMetByExactIntersectionInsteadOfMarched)
     ASSERT_EQ(spheres.size(), 2u);
     expectNear(spheres[0], {1, 2, 3, 0.5f});
     expectNear(spheres[1], {1, 2, 0, 0.5f});  // in world space
-    EXPECT_EQ(culledObjects(code, false), 0);
+    EXPECT_EQ(culledObjects(code), 0);
     EXPECT_TRUE(code.plan.objects.at(0).exact && code.plan.objects.at(1).exact)
         << "the marched distance leaves the spheres out";
     EXPECT_FALSE(code.marchesAnything) << "nothing is left to march";
@@ -155,20 +155,42 @@ TEST(NormalBackOff, OneMarchedObjectAmongExactOnesAndALightFormsNoUnion)
 TEST(NormalBackOff, TwoMarchedObjectsFormAUnion)
 {
     const SceneShaderCode code =
-        specialized("0 0 torus 0 1 0  2 0.5\n0 0 box 4 0 0  1 1 1\n", 2);
+        specialized("0 0 torus 0 1 0  2 0.5\n0 0 torus 6 0 0  2 0.5\n", 2);
     EXPECT_EQ(code.plan.marchedSurfaceCount, 2);
     EXPECT_NE(code.defines.find("#define HAS_MARCHED_UNION 1"), std::string::npos);
 }
 
-TEST(RayCulling, ConeIsCulledByTheHalfSpaceOnTheFarSideOfItsApex)
+TEST(RayCulling, BoxesCylindersDisksAndConesAreMetByExactIntersectionInsteadOfMarched)
 {
-    // Opening downwards below its apex at y = 2; its distance bound grows at b / |(a, b)| of
-    // the height above the apex.
-    const SceneShaderCode down = specialized("0 0 cone 0 2 0  3 4\n", 1);
-    expectNear(culledBound(down, true, 1), {0, 0.8f, 0, -1.6f});
-    // Opening upwards (b < 0) above it.
-    const SceneShaderCode up = specialized("0 0 cone 0 2 0  3 -4\n", 1);
-    expectNear(culledBound(up, true, 1), {0, -0.8f, 0, 1.6f});
+    const SceneShaderCode code = specialized("0 0 box 0 0 0  1 2 2\n"
+                                             "0 0 cylinder 4 0 0  1 2\n"
+                                             "0 0 disk 0 3 0  0 1 0  1\n"
+                                             "0 0 cone 0 2 -6  1 0.5\n"
+                                             "0 0 rotate 0 1 0 30 box 8 0 0  1 1 1\n",
+                                             5);
+    ASSERT_EQ(code.plan.objects.size(), 5u);
+    const char* calls[] = {"exactBox(", "exactCappedCylinder(", "exactDisk(", "exactCone(",
+                           "exactBox("};
+    for (std::size_t i = 0; i < code.plan.objects.size(); ++i) {
+        EXPECT_TRUE(code.plan.objects[i].exact) << "object " << i;
+        EXPECT_NE(code.plan.objects[i].exactIntersection.find(calls[i]), std::string::npos)
+            << "object " << i;
+        EXPECT_FALSE(code.plan.objects[i].culling) << "object " << i << ": never marched";
+    }
+    EXPECT_NE(code.plan.objects[4].exactIntersection.find("toLocalPoint(origin"),
+              std::string::npos)
+        << "a transformed box is met in its own frame";
+    EXPECT_FALSE(code.marchesAnything) << "nothing is left to march";
+    EXPECT_NE(code.defines.find("#define HAS_MARCHED_OBJECTS 0"), std::string::npos);
+}
+
+TEST(RayCulling, AShapeInsideACsgNodeIsStillMarched)
+{
+    const SceneShaderCode code = specialized("0 0 union { box 0 0 0 1 1 1\n"
+                                             "  cylinder 0 2 0 0.5 1 }\n",
+                                             1);
+    EXPECT_FALSE(code.plan.objects.at(0).exact);
+    EXPECT_TRUE(code.marchesAnything);
 }
 
 TEST(RayCulling, TransformedPolyhedronIsMetByItsPlanesInWorldSpace)
@@ -190,7 +212,7 @@ TEST(RayCulling, ObjectsWithoutABoundMakeEveryRayMarchToTheFarDistance)
                                              "  polyhedron 1  1 0 0 0\n"
                                              "}\n",
                                              1);
-    EXPECT_EQ(culledObjects(code, false) + culledObjects(code, true), 0);
+    EXPECT_EQ(culledObjects(code), 0);
     EXPECT_FALSE(code.plan.everyObjectCulled);
     EXPECT_EQ(occurrences(code.sceneFunctions, R"(escapeDistance = FLOAT_MAX)"), 1)
         << "the plan's decision is written into sceneRayCulling";
@@ -200,22 +222,24 @@ TEST(RayCulling, PiecesBeyondThirtyTwoAreNeverCulled)
 {
     std::string objects;
     for (int i = 0; i < 40; ++i)
-        objects += "0 0 box " + std::to_string(3 * i) + " 0 0  1 1 1\n";
+        objects += "0 0 torus " + std::to_string(3 * i) + " 0 0  1 0.25\n";
     const SceneShaderCode code = specialized(objects, 40);
-    EXPECT_EQ(culledObjects(code, false), 32);
-    EXPECT_FALSE(code.plan.everyObjectCulled) << "boxes without a bit may be met anywhere";
+    EXPECT_EQ(culledObjects(code), 32);
+    EXPECT_FALSE(code.plan.everyObjectCulled) << "tori without a bit may be met anywhere";
 }
 
 TEST(RayCulling, EditingAValueChangesOnlyUniforms)
 {
     const SceneShaderCode before = specialized("0 0 polyhedron 1  0 1 0 2\n"
                                                "0 0 sphere 1 2 3 0.5\n"
-                                               "0 0 cone 0 2 0  3 4\n",
-                                               3);
+                                               "0 0 cone 0 2 0  3 4\n"
+                                               "0 0 torus 0 1 0  2 0.5\n",
+                                               4);
     const SceneShaderCode after = specialized("0 0 polyhedron 1  0 1 0.5 7\n"
                                               "0 0 sphere -1 0 3 2\n"
-                                              "0 0 cone 1 1 1  1 2\n",
-                                              3);
+                                              "0 0 cone 1 1 1  1 2\n"
+                                              "0 0 torus 1 2 0  3 0.25\n",
+                                              4);
     EXPECT_EQ(before.sceneFunctions, after.sceneFunctions);
     EXPECT_EQ(before.defines, after.defines);
     EXPECT_NE(before.shapeParameters, after.shapeParameters);
