@@ -19,7 +19,8 @@ std::string shapeName(const Geometry& geometry)
     if (std::holds_alternative<Torus>(geometry))
         return "a torus";
     if (std::holds_alternative<UserSdf>(geometry))
-        return "the user SDF '" + std::get<UserSdf>(geometry).name + "'";
+        return "the user SDF '" + std::get<UserSdf>(geometry).name +
+               "', whose file declares no // @intersect function";
     return "a CSG solid";
 }
 
@@ -105,6 +106,31 @@ std::optional<std::string> exactIntersectionStatements(const Shape& shape, std::
         const int s = allocate({glm::vec4(cone->apex, 0.0f), glm::vec4(unit, 0.0f, 0.0f)});
         out << inFrame(transform, "exactCone(o, d, " + slot(s) + ".xyz, " + slot(s + 1) + ".xy, ",
                        id, allocate);
+    } else if (const auto* user = std::get_if<UserSdf>(&geometry);
+               user && user->intersectFunction) {
+        // The file's own intersection (// @intersect): bool F(origin, direction, x, tMin,
+        // tMax, out t, out normal), in the frame its distance function is evaluated in.
+        const int s = allocate({glm::vec4(user->position, 0.0f)});
+        std::string local = "        vec3 o = origin;\n        vec3 d = direction;\n"
+                            "        float scale = 1.0;\n";
+        std::string toWorld = "outward";
+        if (transform) {
+            const Transform& t = *transform;
+            const int frame =
+                allocate({glm::vec4(t.rotation[0], 0.0f), glm::vec4(t.rotation[1], 0.0f),
+                          glm::vec4(t.rotation[2], 0.0f), glm::vec4(t.translation, t.scale)});
+            const std::string f = std::to_string(frame);
+            local = "        vec3 o = toLocalPoint(origin, " + f + ");\n" +
+                    "        vec3 d = toLocalDirection(direction, " + f + ");\n" +
+                    "        float scale = " + slot(frame + 3) + ".w;\n";
+            toWorld = "toWorldDirection(outward, " + f + ")";
+        }
+        out << "    {\n"
+            << local << "        float crossing;\n        vec3 outward;\n"
+            << "        if (" << *user->intersectFunction << "(o, d, " << slot(s)
+            << ".xyz, tMin / scale, hit.t / scale, crossing, outward))\n"
+            << "            hit = ExactHit(crossing * scale, " << id << ", " << toWorld << ");\n"
+            << "    }\n";
     } else {
         return std::nullopt;
     }
@@ -127,8 +153,8 @@ std::string generateExactSceneIntersection(const Scene& scene,
         if (!statements)
             throw std::runtime_error(
                 scene.sourcePath.string() + ":" + std::to_string(object.line) +
-                ": --exact-geometry intersects spheres, polyhedra, boxes, cylinders, disks and "
-                "cones exactly; this object is " + shapeName(object.shape.geometry) +
+                ": --exact-geometry intersects spheres, polyhedra, boxes, cylinders, disks, cones "
+                "and user SDFs with an // @intersect function exactly; this object is " + shapeName(object.shape.geometry) +
                 ", which has no exact intersection here");
         body += *statements;
     }

@@ -18,8 +18,9 @@ using ShapeParameterAllocator = std::function<int(const std::vector<glm::vec4>&)
 // The GLSL statements that replace `hit` by the first crossing of object `object`'s shape in
 // (tMin, hit.t), in terms of `origin`, `direction` (unit), `tMin` and `hit` (ExactHit),
 // through the functions of shaders/modules/exact_shapes.glsl, with the shape's numbers
-// taken from `allocate`. Spheres, polyhedra, boxes, capped cylinders, disks and infinite
-// cones have one, under any transform; every other shape none (nullopt). Both the --exact-geometry reference
+// taken from `allocate`. Spheres, polyhedra, boxes, capped cylinders, disks, infinite cones
+// and user SDFs whose file declares an `// @intersect` function have one, under any
+// transform; every other shape none (nullopt). Both the --exact-geometry reference
 // and the sphere tracer, which meets the shapes with a closed form instead of marching them,
 // are written from this one description.
 std::optional<std::string> exactIntersectionStatements(const scene::Shape& shape,

@@ -63,6 +63,9 @@ struct UserSdf {
     glm::vec3 position{0.0f};
     std::optional<float> boundingRadius;
     float lipschitz = 1.0f;
+    // `// @intersect FUNCTION`: the file's closed-form intersection of the shape, which rays
+    // use instead of marching it (docs/SCENE_FORMAT.md).
+    std::optional<std::string> intersectFunction;
 };
 
 struct Shape;

@@ -48,17 +48,6 @@ std::string primitiveWords()
     return words;
 }
 
-bool isIdentifier(const std::string& word)
-{
-    if (word.empty() || !(std::isalpha(static_cast<unsigned char>(word[0])) || word[0] == '_'))
-        return false;
-    const bool allWordCharacters = std::all_of(word.begin(), word.end(), [](char c) {
-        return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-    });
-    // GLSL reserves names starting with gl_ and any name containing a double underscore.
-    return allWordCharacters && word.rfind("gl_", 0) != 0 && word.find("__") == std::string::npos;
-}
-
 class Parser : private TokenCursor {
 public:
     Parser(std::vector<Token> tokens, std::string fileName, const FileLookup& lookup)
@@ -238,7 +227,7 @@ private:
             return {parseCsg(type, which, depth + 1), std::nullopt};
         if (const PrimitiveKind* primitive = findPrimitiveKind(word))
             return {primitive->read(*this), std::nullopt};
-        if (word == "{" || word == "}" || !isIdentifier(word))
+        if (word == "{" || word == "}" || !isGlslIdentifier(word))
             failAt(type, expected);
 
         UserSdf user;

@@ -2,6 +2,8 @@
 
 #include "scene/SceneError.h"
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -9,6 +11,16 @@
 #include <string>
 
 namespace scene {
+
+bool isGlslIdentifier(const std::string& word)
+{
+    if (word.empty() || !(std::isalpha(static_cast<unsigned char>(word[0])) || word[0] == '_'))
+        return false;
+    const bool allWordCharacters = std::all_of(word.begin(), word.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    });
+    return allWordCharacters && word.rfind("gl_", 0) != 0 && word.find("__") == std::string::npos;
+}
 
 void readUserSdfDeclarations(UserSdf& user)
 {
@@ -25,6 +37,16 @@ void readUserSdfDeclarations(UserSdf& user)
         std::string key;
         std::string valueText;
         words >> key >> valueText;
+        if (key == "@intersect") {
+            std::string extra;
+            if (!isGlslIdentifier(valueText) || (words >> extra))
+                throw SceneError(user.sourcePath.string(), lineNumber,
+                                 valueText.empty() ? key : valueText,
+                                 "the name of the GLSL function that intersects the shape "
+                                 "after @intersect, alone");
+            user.intersectFunction = valueText;
+            continue;
+        }
         if (key != "@bound" && key != "@lipschitz")
             continue;
         float value = 0.0f;

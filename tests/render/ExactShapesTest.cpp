@@ -1,9 +1,11 @@
 // Shapes met by exact intersection, in the default render and the --exact-geometry
 // reference, against their silhouettes found on the CPU without their intersection
-// formulas: a black cone against the sky is black wherever every ray through a pixel meets
-// the solid and sky-coloured wherever none does. The solid {a |q.xz| + b q.y < 0} is convex
-// and its bound convex along any ray, so whether a ray enters it is whether the bound's
-// minimum along the ray (found by ternary search) is negative.
+// formulas: a black solid against the sky is black wherever every ray through a pixel meets
+// it and sky-coloured wherever none does. The cone {a |q.xz| + b q.y < 0} is convex and its
+// bound convex along any ray, so whether a ray enters it is whether the bound's minimum
+// along the ray (found by ternary search) is negative. The seed's CSG solid (the `csg` user
+// SDF, whose file declares its intersection by intervals) is found by sphere tracing its
+// distance in double precision.
 #include "support/PinholeCamera.h"
 #include "support/RenderRun.h"
 
@@ -11,6 +13,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
 #include <sstream>
 
 namespace render_tests {
@@ -49,17 +52,53 @@ struct ConeSolid {
     }
 };
 
-std::string coneScene(const std::string& cone)
+// shaders/csg.glsl's distance, in double precision, turned by `toLocal` about the origin.
+struct DrilledRoundedCube {
+    glm::dmat3 toLocal{1.0};
+
+    double distance(const glm::dvec3& p) const
+    {
+        const glm::dvec3 q = toLocal * p;
+        const glm::dvec3 outside = glm::abs(q) - glm::dvec3(1.0);
+        const double box = glm::length(glm::max(outside, glm::dvec3(0.0))) +
+                           std::min(std::max(outside.x, std::max(outside.y, outside.z)), 0.0);
+        const double roundedCube = std::max(glm::length(q) - 1.35, box);
+        const double drills = std::min(std::min(glm::length(glm::dvec2(q.x, q.y)),
+                                                glm::length(glm::dvec2(q.y, q.z))),
+                                       glm::length(glm::dvec2(q.x, q.z))) -
+                              0.7;
+        return std::max(roundedCube, -drills);
+    }
+
+    bool metBy(const glm::dvec3& origin, const glm::dvec3& direction) const
+    {
+        double t = 0.0;
+        for (int step = 0; step < 100000 && t < 20.0; ++step) {
+            const double d = distance(origin + t * direction);
+            if (d < 1e-9)
+                return true;
+            t += std::max(d, 1e-7);
+        }
+        return false;
+    }
+};
+
+std::string blackSolidScene(const std::string& camera, const std::string& solid)
 {
     std::ostringstream text;
-    text << "0 0.5 6\n0 -0.5 0\n0 1 0\n50\n"
-         << "0\n1\nsolid 0 0 0\n1\n0 0 0 0 0 0 0\n1\n0 0 " << cone << "\n";
+    text << camera << "0\n1\nsolid 0 0 0\n1\n0 0 0 0 0 0 0\n1\n0 0 " << solid << "\n";
     return text.str();
 }
 
-// Pixels every ray of which meets the cone are black; pixels none of whose rays do see the
-// sky, which is at least 0.2 in every direction of this view. Returns the pixels judged.
-int expectSilhouette(const std::string& sceneText, const ConeSolid& cone, bool exactGeometry)
+std::string coneScene(const std::string& cone)
+{
+    return blackSolidScene("0 0.5 6\n0 -0.5 0\n0 1 0\n50\n", cone);
+}
+
+// Pixels every ray of which meets the solid are black; pixels none of whose rays do see the
+// sky, which is at least 0.2 in every direction of these views. Returns the pixels judged.
+template <typename Solid>
+int expectSilhouette(const std::string& sceneText, const Solid& solid, bool exactGeometry)
 {
     const scene::Scene scene = sceneFromText(sceneText);
     render::RenderSettings settings = settingsWithSeed(3);
@@ -71,11 +110,11 @@ int expectSilhouette(const std::string& sceneText, const ConeSolid& cone, bool e
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
             const float value = channelMean(image.radiance, x, y);
-            auto meets = [&](glm::dvec3 d) { return cone.metBy(camera.eye(), d); };
-            auto misses = [&](glm::dvec3 d) { return !cone.metBy(camera.eye(), d); };
+            auto meets = [&](glm::dvec3 d) { return solid.metBy(camera.eye(), d); };
+            auto misses = [&](glm::dvec3 d) { return !solid.metBy(camera.eye(), d); };
             if (camera.wholePixel(x, y, meets)) {
                 ++inside;
-                EXPECT_LT(value, 1e-6f) << "pixel (" << x << ", " << y << ") is on the cone";
+                EXPECT_LT(value, 1e-6f) << "pixel (" << x << ", " << y << ") is on the solid";
             } else if (camera.wholePixel(x, y, misses)) {
                 ++outside;
                 EXPECT_GT(value, 0.2f) << "pixel (" << x << ", " << y << ") sees the sky";
@@ -110,6 +149,23 @@ TEST(ExactShapes, ATurnedConeIsMetInItsOwnFrame)
     const std::string scene = coneScene("rotate 0 0 1 25 cone 0 1 0  1 0.6");
     expectSilhouette(scene, cone, false);
     expectSilhouette(scene, cone, true);
+}
+
+const char* const kCsgCamera = "3 2.2 4\n0 0 0\n0 1 0\n40\n";
+
+TEST(ExactShapes, AUserSdfWithADeclaredIntersectionIsMetWithinItsSilhouette)
+{
+    const std::string scene = blackSolidScene(kCsgCamera, "csg 0 0 0");
+    expectSilhouette(scene, DrilledRoundedCube{}, false);
+    expectSilhouette(scene, DrilledRoundedCube{}, true);
+}
+
+TEST(ExactShapes, ATurnedUserSdfIsMetInItsOwnFrame)
+{
+    const glm::dmat3 turn(glm::rotate(glm::dmat4(1.0), glm::radians(30.0), glm::dvec3(1, 1, 0)));
+    const std::string scene = blackSolidScene(kCsgCamera, "rotate 1 1 0 30 csg 0 0 0");
+    expectSilhouette(scene, DrilledRoundedCube{glm::transpose(turn)}, false);
+    expectSilhouette(scene, DrilledRoundedCube{glm::transpose(turn)}, true);
 }
 
 }  // namespace

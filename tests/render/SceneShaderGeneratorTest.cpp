@@ -184,6 +184,18 @@ TEST(RayCulling, BoxesCylindersDisksAndConesAreMetByExactIntersectionInsteadOfMa
     EXPECT_NE(code.defines.find("#define HAS_MARCHED_OBJECTS 0"), std::string::npos);
 }
 
+TEST(RayCulling, AUserSdfIsMetExactlyWhereItsFileDeclaresAnIntersection)
+{
+    // shaders/csg.glsl declares `// @intersect csgIntersect`; shaders/knot.glsl declares none.
+    const SceneShaderCode code = specialized("0 0 csg 0 0 0\n0 0 knot 0 0 -8\n", 2);
+    ASSERT_EQ(code.plan.objects.size(), 2u);
+    EXPECT_TRUE(code.plan.objects[0].exact);
+    EXPECT_NE(code.plan.objects[0].exactIntersection.find("csgIntersect(o, d, "),
+              std::string::npos);
+    EXPECT_FALSE(code.plan.objects[1].exact);
+    EXPECT_TRUE(code.plan.objects[1].culling) << "the knot is marched, culled by its bound";
+}
+
 TEST(RayCulling, AShapeInsideACsgNodeIsStillMarched)
 {
     const SceneShaderCode code = specialized("0 0 union { box 0 0 0 1 1 1\n"

@@ -440,6 +440,29 @@ TEST_F(UserSdfFiles, UnusableDeclarationIsAnErrorNamingTheShaderFileAndLine)
     }
 }
 
+TEST_F(UserSdfFiles, DeclareTheFunctionThatIntersectsTheShape)
+{
+    write("blob.glsl", "// @intersect blobIntersect\n"
+                       "float blob(vec3 p, vec3 x) { return length(p - x) - 1.0; }\n");
+    EXPECT_EQ(parseUserSdf("blob").intersectFunction.value_or(""), "blobIntersect");
+}
+
+TEST_F(UserSdfFiles, AnIntersectionThatIsNoGlslNameIsAnErrorNamingTheShaderFileAndLine)
+{
+    for (const char* declaration : {"// @intersect 2blob\n", "// @intersect\n",
+                                    "// @intersect blob extra\n", "// @intersect gl_blob\n"}) {
+        write("blob.glsl", std::string("// A blob.\n") + declaration +
+                               "float blob(vec3 p, vec3 x) { return length(p - x) - 1.0; }\n");
+        try {
+            parseUserSdf("blob");
+            ADD_FAILURE() << declaration << " was accepted";
+        } catch (const SceneError& error) {
+            EXPECT_EQ(error.file(), (folder_ / "blob.glsl").string()) << declaration;
+            EXPECT_EQ(error.line(), 2) << declaration;
+        }
+    }
+}
+
 TEST(UserSdfDeclarations, TheProjectKnotReturnsItsOwnSafeBound)
 {
     const Scene scene = parseSceneFile(testing_support::sourceDirectory() / "scenes" / "scene4.in");
