@@ -28,22 +28,30 @@ float knot(vec3 p, vec3 x)
         return torusBound;
     // The twist, 1.5 times the angle around the ring, as three times the half angle, whose
     // direction is that of (r + x, y) (or, where x < 0 and that cancels, of (|y|, r - x)
-    // turned to y's side): a square root where atan, cos and sin would cost several
-    // polynomials each.
+    // turned to y's side): cos 3a = h.x (4 h.x^2 - 3) and sin 3a = h.y (3 - 4 h.y^2) for the
+    // unit h = v / |v|, that is v.x (4 v.x^2 - 3 |v|^2) / |v|^3 and likewise, with one
+    // inverse square root where atan, cos and sin would cost several polynomials each.
     vec2 towardsHalfAngle = q.x >= 0.0 ? vec2(ringDistance + q.x, q.y)
                                        : vec2(abs(q.y), (q.y >= 0.0 ? 1.0 : -1.0) *
                                                             (ringDistance - q.x));
-    vec2 halfAngle = normalize(towardsHalfAngle);
-    float c = halfAngle.x * (4.0 * halfAngle.x * halfAngle.x - 3.0);
-    float s = halfAngle.y * (3.0 - 4.0 * halfAngle.y * halfAngle.y);
+    float lengthSquared = dot(towardsHalfAngle, towardsHalfAngle);
+    float inverseLength = inversesqrt(lengthSquared);
+    float inverseCube = inverseLength * inverseLength * inverseLength;
+    vec2 v = towardsHalfAngle;
+    float c = v.x * (4.0 * v.x * v.x - 3.0 * lengthSquared) * inverseCube;
+    float s = v.y * (3.0 * lengthSquared - 4.0 * v.y * v.y) * inverseCube;
     vec2 section = vec2(c * core.x + s * core.y, -s * core.x + c * core.y);
     // Two strands, mirror images across the core.
     section.x = abs(section.x) - 1.35;
     float tubes = length(section) - 1.0;
 
-    float stretch = 1.5 * coreDistance / max(ringDistance, 1e-6);
-    float reach = abs(tubes) / sqrt(1.0 + stretch * stretch);
-    float worstStretch = 1.5 * (coreDistance + reach) / max(ringDistance - reach, 1e-6);
-    float bound = tubes / sqrt(1.0 + worstStretch * worstStretch);
+    // d / sqrt(1 + (1.5 rho / r)^2) written as d r / sqrt(r^2 + (1.5 rho)^2): no division.
+    float ring = max(ringDistance, 1e-6);
+    float reach = abs(tubes) * ring *
+                  inversesqrt(ring * ring + 2.25 * coreDistance * coreDistance);
+    float worstRing = max(ringDistance - reach, 1e-6);
+    float worstCore = coreDistance + reach;
+    float bound = tubes * worstRing *
+                  inversesqrt(worstRing * worstRing + 2.25 * worstCore * worstCore);
     return max(bound, torusBound);
 }
