@@ -235,6 +235,150 @@ bool exactCone(vec3 origin, vec3 direction, vec3 apex, vec2 unitSlope, float tMi
     return false;
 }
 
+// Torus around the y axis (centre, major radius R, minor radius r): the quartic
+// (|p|^2 + R^2 - r^2)^2 = 4 R^2 |p.xz|^2 along the ray, written from the point w of the ray
+// nearest the centre, p = w + y d (w perpendicular to d), in units of R + r, so that its
+// coefficients stay near 1 however far the ray starts:
+//     y^4 + P y^2 + Q y + S = 0,  P = 2k - 4R^2 |d.xz|^2,  Q = -8 R^2 (w.xz . d.xz),
+//     S = k^2 - 4 R^2 |w.xz|^2,   k = |w|^2 + R^2 - r^2.
+// Ferrari's method: the resolvent U^3 + 2P U^2 + (P^2 - 4S) U - Q^2 = 0 has a root U >= 0,
+// and with u = sqrt(U), z = (U + P) / 2 the quartic is the product of
+// y^2 - u y + z + Q / (2u) and y^2 + u y + z - Q / (2u). Roots are polished by Newton's
+// method on the quartic, and each is checked against the torus's exact distance.
+float torusQuarticNewton(float y, float P, float Q, float S)
+{
+    for (int i = 0; i < 2; ++i) {
+        float y2 = y * y;
+        float value = (y2 + P) * y2 + Q * y + S;
+        float slope = (4.0 * y2 + 2.0 * P) * y + Q;
+        if (slope != 0.0)
+            y -= value / slope;
+    }
+    return y;
+}
+
+// The roots of y^2 + b y + c = 0 (as near, far), or false.
+bool torusQuadraticRoots(float b, float c, out float near, out float far)
+{
+    float discriminant = 0.25 * b * b - c;
+    near = far = 0.0;
+    if (discriminant < 0.0)
+        return false;
+    float root = sqrt(discriminant);
+    near = -0.5 * b - root;
+    far = -0.5 * b + root;
+    return true;
+}
+
+// A root y0 of the quartic, polished, taken as the crossing where it is the nearest so far
+// beyond tMin and truly on the torus (its exact distance there near 0).
+void torusConsiderRoot(float y0, float P, float Q, float S, float scale, float along, vec3 o,
+                       vec3 direction, float majorRadius, float minorRadius, float tMin,
+                       inout float best, inout bool found)
+{
+    float y = torusQuarticNewton(y0, P, Q, S);
+    float t = scale * y - along;
+    if (!(t > tMin && t < best))
+        return;
+    vec3 p = o + t * direction;
+    vec2 radial = vec2(length(p.xz) - majorRadius, p.y);
+    if (abs(length(radial) - minorRadius) > 1e-3 * scale)
+        return;
+    best = t;
+    found = true;
+}
+
+bool exactTorus(vec3 origin, vec3 direction, vec3 center, float majorRadius,
+                float minorRadius, float tMin, int object, inout ExactHit hit)
+{
+    vec3 o = origin - center;
+    float scale = majorRadius + minorRadius;
+    float along = dot(o, direction);
+    vec3 w = (o - along * direction) / scale;
+    float wSquared = dot(w, w);
+    if (wSquared >= 1.0)
+        return false;  // the ray misses the bounding sphere
+    float R = majorRadius / scale;
+    float r = minorRadius / scale;
+    float R2 = R * R;
+    float k = wSquared + R2 - r * r;
+    float P = 2.0 * k - 4.0 * R2 * dot(direction.xz, direction.xz);
+    float Q = -8.0 * R2 * dot(w.xz, direction.xz);
+    float S = k * k - 4.0 * R2 * dot(w.xz, w.xz);
+
+    // The resolvent's largest root, from the depressed cubic V^3 + a V + b = 0, U = V - 2P/3.
+    float A = 2.0 * P;
+    float B = P * P - 4.0 * S;
+    float C = -Q * Q;
+    float a = B - A * A / 3.0;
+    float b = (2.0 * A * A * A) / 27.0 - A * B / 3.0 + C;
+    float halfB = 0.5 * b;
+    float discriminant = halfB * halfB + a * a * a / 27.0;
+    float V;
+    if (discriminant >= 0.0) {
+        float root = sqrt(discriminant);
+        float first = -halfB + root;
+        float second = -halfB - root;
+        V = sign(first) * pow(abs(first), 1.0 / 3.0) + sign(second) * pow(abs(second), 1.0 / 3.0);
+    } else {
+        float radius = sqrt(-a / 3.0);
+        float angle = acos(clamp(-halfB / (radius * radius * radius), -1.0, 1.0));
+        V = 2.0 * radius * cos(angle / 3.0);
+    }
+    float U = V - A / 3.0;
+    // Newton's method on the resolvent, whose root float32 Cardano leaves rough.
+    for (int i = 0; i < 2; ++i) {
+        float value = ((U + A) * U + B) * U + C;
+        float slope = (3.0 * U + 2.0 * A) * U + B;
+        if (slope != 0.0)
+            U -= value / slope;
+    }
+    U = max(U, 0.0);
+
+    float best = hit.t;
+    bool found = false;
+    float u = sqrt(U);
+    if (u > 1e-4) {
+        float z = 0.5 * (U + P);
+        float split = Q / (2.0 * u);
+        float near;
+        float far;
+        if (torusQuadraticRoots(-u, z + split, near, far)) {
+            torusConsiderRoot(near, P, Q, S, scale, along, o, direction, majorRadius,
+                              minorRadius, tMin, best, found);
+            torusConsiderRoot(far, P, Q, S, scale, along, o, direction, majorRadius,
+                              minorRadius, tMin, best, found);
+        }
+        if (torusQuadraticRoots(u, z - split, near, far)) {
+            torusConsiderRoot(near, P, Q, S, scale, along, o, direction, majorRadius,
+                              minorRadius, tMin, best, found);
+            torusConsiderRoot(far, P, Q, S, scale, along, o, direction, majorRadius,
+                              minorRadius, tMin, best, found);
+        }
+    } else {
+        // Q is near 0: y^4 + P y^2 + S = 0, a quadratic in y^2.
+        float low;
+        float high;
+        if (torusQuadraticRoots(P, S, low, high)) {
+            for (int side = 0; side < 2; ++side) {
+                float squared = side == 0 ? high : low;
+                if (squared >= 0.0) {
+                    torusConsiderRoot(-sqrt(squared), P, Q, S, scale, along, o, direction,
+                                      majorRadius, minorRadius, tMin, best, found);
+                    torusConsiderRoot(sqrt(squared), P, Q, S, scale, along, o, direction,
+                                      majorRadius, minorRadius, tMin, best, found);
+                }
+            }
+        }
+    }
+    if (!found)
+        return false;
+    vec3 p = o + best * direction;
+    vec3 ring = majorRadius * normalize(vec3(p.x, 0.0, p.z));
+    hit = ExactHit(best, object, normalize(p - ring));
+    return true;
+}
+
 // Disk (centre, radius) = vec4 with unit normal n: the ray's crossing of its plane, if it is
 // within the radius. It faces the ray.
 bool exactDisk(vec3 origin, vec3 direction, vec4 disk, vec3 normal, float tMin, int object,

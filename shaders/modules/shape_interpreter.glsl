@@ -116,7 +116,8 @@ bool objectInMask(int object, uint mask)
 }
 
 // An object that is one untransformed shape with a closed-form intersection (a polyhedron, a
-// sphere that is not a light, a box, a capped cylinder, a disk or a cone): rays meet it by exact
+// sphere that is not a light, a box, a capped cylinder, a disk, a cone, or a torus no thinner
+// than THINNEST_EXACT_TORUS, render/ExactSceneIntersection.h): rays meet it by exact
 // intersection (exactSurfacesIntersect), so the culled forms, which rays march, leave it
 // out. The specialised shader meets transformed ones exactly too.
 bool isExactObject(int object)
@@ -127,6 +128,9 @@ bool isExactObject(int object)
     bool boundedClosedForm = first.y == PRIMITIVE_BOX || first.y == PRIMITIVE_CYLINDER ||
                              first.y == PRIMITIVE_DISK;
     return single && (first.y == PRIMITIVE_POLYHEDRON || first.y == PRIMITIVE_CONE ||
+                      (first.y == PRIMITIVE_TORUS &&
+                       uShapeParameters[first.z + 1].x >=
+                           THINNEST_EXACT_TORUS * uShapeParameters[first.z].w) ||
                       (boundedClosedForm && EXACT_BOXES_CYLINDERS_AND_DISKS != 0) ||
                       (first.y == PRIMITIVE_SPHERE && objectSphereLight(object) < 0));
 }
@@ -146,6 +150,9 @@ void exactSurfacesIntersect(vec3 origin, vec3 direction, float tMin, int only, i
         } else if (primitive.y == PRIMITIVE_CYLINDER) {
             exactCappedCylinder(origin, direction, first.xyz, first.w,
                                 uShapeParameters[primitive.z + 1].x, tMin, object, hit);
+        } else if (primitive.y == PRIMITIVE_TORUS) {
+            exactTorus(origin, direction, first.xyz, first.w, uShapeParameters[primitive.z + 1].x,
+                       tMin, object, hit);
         } else if (primitive.y == PRIMITIVE_CONE) {
             exactCone(origin, direction, first.xyz, uShapeParameters[primitive.z + 1].xy, tMin,
                       object, hit);

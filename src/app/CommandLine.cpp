@@ -394,8 +394,9 @@ shader:
   --no-culling          march every ray against every object (culling the objects a ray
                         cannot come near is exact; this only shows what it saves)
   --exact-geometry      find surfaces by exact ray intersection instead of sphere tracing
-                        (spheres, polyhedra, boxes, cylinders, disks and cones only): the
-                        reference for the sphere tracer's geometric error (docs/ACCURACY.md)
+                        (spheres, polyhedra, boxes, cylinders, disks, cones, tori no thinner
+                        than 1:10, user SDFs with an @intersect function): the reference for
+                        the sphere tracer's geometric error (docs/ACCURACY.md)
 
   --help                this text
   --version             the program's version

@@ -16,8 +16,12 @@ std::string slot(int index)
 
 std::string shapeName(const Geometry& geometry)
 {
-    if (std::holds_alternative<Torus>(geometry))
-        return "a torus";
+    if (std::holds_alternative<Torus>(geometry)) {
+        std::ostringstream name;
+        name << "a torus whose minor radius is under " << kThinnestExactTorus
+             << " of its major radius (its quartic loses too many digits in float32)";
+        return name.str();
+    }
     if (std::holds_alternative<UserSdf>(geometry))
         return "the user SDF '" + std::get<UserSdf>(geometry).name +
                "', whose file declares no // @intersect function";
@@ -101,6 +105,14 @@ std::optional<std::string> exactIntersectionStatements(const Shape& shape, std::
                        "exactCappedCylinder(o, d, " + slot(s) + ".xyz, " + slot(s) + ".w, " +
                            slot(s + 1) + ".x, ",
                        id, allocate);
+    } else if (const auto* torus = std::get_if<Torus>(&geometry);
+               torus && torus->minorRadius >= kThinnestExactTorus * torus->majorRadius) {
+        const int s = allocate({glm::vec4(torus->center, torus->majorRadius),
+                                glm::vec4(torus->minorRadius, 0.0f, 0.0f, 0.0f)});
+        out << inFrame(transform,
+                       "exactTorus(o, d, " + slot(s) + ".xyz, " + slot(s) + ".w, " +
+                           slot(s + 1) + ".x, ",
+                       id, allocate);
     } else if (const auto* cone = std::get_if<Cone>(&geometry)) {
         const glm::vec2 unit = glm::normalize(cone->slope);
         const int s = allocate({glm::vec4(cone->apex, 0.0f), glm::vec4(unit, 0.0f, 0.0f)});
@@ -153,8 +165,8 @@ std::string generateExactSceneIntersection(const Scene& scene,
         if (!statements)
             throw std::runtime_error(
                 scene.sourcePath.string() + ":" + std::to_string(object.line) +
-                ": --exact-geometry intersects spheres, polyhedra, boxes, cylinders, disks, cones "
-                "and user SDFs with an // @intersect function exactly; this object is " + shapeName(object.shape.geometry) +
+                ": --exact-geometry intersects spheres, polyhedra, boxes, cylinders, disks, cones, "
+                "tori and user SDFs with an // @intersect function exactly; this object is " + shapeName(object.shape.geometry) +
                 ", which has no exact intersection here");
         body += *statements;
     }

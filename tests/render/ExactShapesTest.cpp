@@ -3,9 +3,9 @@
 // formulas: a black solid against the sky is black wherever every ray through a pixel meets
 // it and sky-coloured wherever none does. The cone {a |q.xz| + b q.y < 0} is convex and its
 // bound convex along any ray, so whether a ray enters it is whether the bound's minimum
-// along the ray (found by ternary search) is negative. The seed's CSG solid (the `csg` user
-// SDF, whose file declares its intersection by intervals) is found by sphere tracing its
-// distance in double precision.
+// along the ray (found by ternary search) is negative. The torus (a quartic) and the seed's
+// CSG solid (the `csg` user SDF, whose file declares its intersection by intervals) are
+// found by sphere tracing their exact distances in double precision.
 #include "support/PinholeCamera.h"
 #include "support/RenderRun.h"
 
@@ -83,6 +83,33 @@ struct DrilledRoundedCube {
     }
 };
 
+// A torus around y, turned by `toLocal` about the origin.
+struct TorusSolid {
+    glm::dvec3 center;
+    double majorRadius;
+    double minorRadius;
+    glm::dmat3 toLocal{1.0};
+
+    double distance(const glm::dvec3& p) const
+    {
+        const glm::dvec3 q = toLocal * p - center;
+        return glm::length(glm::dvec2(glm::length(glm::dvec2(q.x, q.z)) - majorRadius, q.y)) -
+               minorRadius;
+    }
+
+    bool metBy(const glm::dvec3& origin, const glm::dvec3& direction) const
+    {
+        double t = 0.0;
+        for (int step = 0; step < 100000 && t < 2000.0; ++step) {
+            const double d = distance(origin + t * direction);
+            if (d < 1e-9)
+                return true;
+            t += std::max(d, 1e-7);
+        }
+        return false;
+    }
+};
+
 std::string blackSolidScene(const std::string& camera, const std::string& solid)
 {
     std::ostringstream text;
@@ -149,6 +176,29 @@ TEST(ExactShapes, ATurnedConeIsMetInItsOwnFrame)
     const std::string scene = coneScene("rotate 0 0 1 25 cone 0 1 0  1 0.6");
     expectSilhouette(scene, cone, false);
     expectSilhouette(scene, cone, true);
+}
+
+TEST(ExactShapes, ATorusIsMetWithinItsSilhouette)
+{
+    // Seen from above at an angle, so that its hole shows the sky.
+    const std::string scene =
+        blackSolidScene("0 3 4.5\n0 0 0\n0 1 0\n45\n", "torus 0 0 0  1.5 0.45");
+    const TorusSolid torus{{0, 0, 0}, 1.5, 0.45};
+    expectSilhouette(scene, torus, false);
+    expectSilhouette(scene, torus, true);
+}
+
+TEST(ExactShapes, AFarTorusSeenNearlyEdgeOnIsMetWithinItsSilhouette)
+{
+    // 300 of its sizes away with a narrow view, turned so that rays graze its rim: the
+    // quartic's coefficients would lose their digits if it were not solved from the ray's
+    // point nearest the centre.
+    const glm::dmat3 turn(glm::rotate(glm::dmat4(1.0), glm::radians(8.0), glm::dvec3(1, 0, 0)));
+    const std::string scene = blackSolidScene("0 40 600\n0 0 0\n0 1 0\n0.4\n",
+                                              "rotate 1 0 0 8 torus 0 0 0  1.5 0.45");
+    const TorusSolid torus{{0, 0, 0}, 1.5, 0.45, glm::transpose(turn)};
+    expectSilhouette(scene, torus, false);
+    expectSilhouette(scene, torus, true);
 }
 
 const char* const kCsgCamera = "3 2.2 4\n0 0 0\n0 1 0\n40\n";

@@ -23,8 +23,10 @@ void PrintTo(const CullingCase& culling, std::ostream* out)
     *out << culling.name;
 }
 
-// A closed room of six planes, one wall a transformed polyhedron, with a box, a torus, a cone
-// and a cylinder, a point light and a sphere light; the camera in a corner.
+// A closed room of six planes, one wall a transformed polyhedron, with marched solids (shapes
+// with a closed form are met exactly and never culled, so these are a rounded box and CSG
+// blocks: a torus with a sphere in its hole, a cone cut by a sphere, a cylinder scooped by
+// one), a point light and a sphere light; the camera in a corner.
 const char* const kRoom = R"(
 -2.5 2.5 2.5   0 0.5 0   0 1 0   70
 1
@@ -40,15 +42,15 @@ solid 0.2 0.4 0.8
 7
 0 0 polyhedron 5  0 1 0 0  0 -1 0 4  1 0 0 3  0 0 1 3  0 0 -1 3
 2 0 translate 3 0 0 rotate 0 0 1 90 polyhedron 1  0 1 0 0
-1 1 translate 1 0.5 -1 rotate 0 1 0 30 box 0 0 0  0.5 0.5 0.5
-2 0 torus -1 0.3 -1  0.6 0.25
-1 1 cone 1.5 1.5 1.5  1 1.5
-2 0 cylinder -1.5 0.5 1.5  0.4 0.5
+1 1 translate 1 0.5 -1 rotate 0 1 0 30 rounded_box 0 0 0  0.5 0.5 0.5  0.1
+2 0 union { torus -1 0.3 -1  0.6 0.25  sphere -1 0.3 -1  0.3 }
+1 1 intersection { cone 1.5 1.5 1.5  1 1.5  sphere 1.5 1 1.5  0.8 }
+2 0 difference { cylinder -1.5 0.5 1.5  0.4 0.5  sphere -1.5 1 1.5  0.25 }
 0 2 sphere 0 3.5 0  0.3
 )";
 
 // An open scene seen from a hair above the floor: rays graze it up to the horizon; a cone
-// opening downwards, a sphere and a box above it.
+// opening downwards cut by a sphere, a sphere and a rounded box above it.
 const char* const kHorizon = R"(
 0 0.05 6   0 0.3 0   0 1 0   50
 1
@@ -61,8 +63,8 @@ solid 0.8 0.3 0.2
 4
 0 0 polyhedron 1  0 1 0 0
 1 0 sphere -1 0.5 0  0.5
-1 0 cone 1.2 1 -1  1 2
-1 0 box 0 0.2 -3  2 0.2 0.2
+1 0 intersection { cone 1.2 1 -1  1 2  sphere 1.2 0.5 -1  0.6 }
+1 0 rounded_box 0 0.2 -3  2 0.2 0.2  0.05
 )";
 
 // The camera inside a glass sphere, mirror and Lambertian spheres outside it, under the
@@ -97,7 +99,7 @@ solid 0.8 0.8 0.8
 3
 0 0 polyhedron 2  0 1 0 0  0 0 1 2
 0 0 sphere 0 1 0  0.7
-0 0 box 1.5 0.5 0.5  0.3 0.5 0.3
+0 0 rounded_box 1.5 0.5 0.5  0.3 0.5 0.3  0.05
 )";
 
 class RayCulling : public ::testing::TestWithParam<CullingCase> {};

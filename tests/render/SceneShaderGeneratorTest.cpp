@@ -101,8 +101,8 @@ TEST(RayCulling, PolyhedraAreMetByExactIntersectionInsteadOfMarched)
 
 TEST(RayCulling, FiniteObjectsAreCulledByTheirBoundingBalls)
 {
-    const SceneShaderCode code = specialized("0 0 torus 0 0 0  2.5 0.5\n"
-                                             "0 0 torus 0 1 0  2 0.5\n",
+    const SceneShaderCode code = specialized("0 0 rounded_box 0 0 0  1 2 2  0.1\n"
+                                             "0 0 rounded_box 0 1 0  1.2 1.6 1.5  0.1\n",
                                              2);
     EXPECT_EQ(culledObjects(code), 2);
     expectNear(culledBound(code, 1), {0, 0, 0, 3});
@@ -136,7 +136,7 @@ TEST(RayCulling, SpheresAreMetByExactIntersectionInsteadOfMarched)
 
 TEST(RayCulling, ASceneWithAShapeWithoutAClosedFormMarches)
 {
-    const SceneShaderCode code = specialized("0 0 sphere 1 2 3 0.5\n0 0 torus 0 1 0  2 0.5\n", 2);
+    const SceneShaderCode code = specialized("0 0 sphere 1 2 3 0.5\n0 0 rounded_box 0 1 0  1 1 1  0.2\n", 2);
     EXPECT_TRUE(code.marchesAnything);
     EXPECT_NE(code.defines.find("#define HAS_MARCHED_OBJECTS 1"), std::string::npos);
 }
@@ -147,7 +147,7 @@ TEST(RayCulling, ASceneWithAShapeWithoutAClosedFormMarches)
 TEST(NormalBackOff, OneMarchedObjectAmongExactOnesAndALightFormsNoUnion)
 {
     const SceneShaderCode code = specialized(
-        "0 0 torus 0 1 0  2 0.5\n0 0 polyhedron 1\n 0 1 0 1\n0 1 sphere 0 3 0 0.5\n", 3);
+        "0 0 rounded_box 0 1 0  1 1 1  0.2\n0 0 polyhedron 1\n 0 1 0 1\n0 1 sphere 0 3 0 0.5\n", 3);
     EXPECT_EQ(code.plan.marchedSurfaceCount, 1);
     EXPECT_NE(code.defines.find("#define HAS_MARCHED_UNION 0"), std::string::npos);
 }
@@ -155,22 +155,23 @@ TEST(NormalBackOff, OneMarchedObjectAmongExactOnesAndALightFormsNoUnion)
 TEST(NormalBackOff, TwoMarchedObjectsFormAUnion)
 {
     const SceneShaderCode code =
-        specialized("0 0 torus 0 1 0  2 0.5\n0 0 torus 6 0 0  2 0.5\n", 2);
+        specialized("0 0 rounded_box 0 1 0  1 1 1  0.2\n0 0 rounded_box 6 0 0  1 1 1  0.2\n", 2);
     EXPECT_EQ(code.plan.marchedSurfaceCount, 2);
     EXPECT_NE(code.defines.find("#define HAS_MARCHED_UNION 1"), std::string::npos);
 }
 
-TEST(RayCulling, BoxesCylindersDisksAndConesAreMetByExactIntersectionInsteadOfMarched)
+TEST(RayCulling, BoxesCylindersDisksConesAndToriAreMetByExactIntersectionInsteadOfMarched)
 {
     const SceneShaderCode code = specialized("0 0 box 0 0 0  1 2 2\n"
                                              "0 0 cylinder 4 0 0  1 2\n"
                                              "0 0 disk 0 3 0  0 1 0  1\n"
                                              "0 0 cone 0 2 -6  1 0.5\n"
-                                             "0 0 rotate 0 1 0 30 box 8 0 0  1 1 1\n",
-                                             5);
-    ASSERT_EQ(code.plan.objects.size(), 5u);
-    const char* calls[] = {"exactBox(", "exactCappedCylinder(", "exactDisk(", "exactCone(",
-                           "exactBox("};
+                                             "0 0 rotate 0 1 0 30 box 8 0 0  1 1 1\n"
+                                             "0 0 torus 0 1 0  2 0.5\n",
+                                             6);
+    ASSERT_EQ(code.plan.objects.size(), 6u);
+    const char* calls[] = {"exactBox(",  "exactCappedCylinder(", "exactDisk(",
+                           "exactCone(", "exactBox(",            "exactTorus("};
     for (std::size_t i = 0; i < code.plan.objects.size(); ++i) {
         EXPECT_TRUE(code.plan.objects[i].exact) << "object " << i;
         EXPECT_NE(code.plan.objects[i].exactIntersection.find(calls[i]), std::string::npos)
@@ -194,6 +195,14 @@ TEST(RayCulling, AUserSdfIsMetExactlyWhereItsFileDeclaresAnIntersection)
               std::string::npos);
     EXPECT_FALSE(code.plan.objects[1].exact);
     EXPECT_TRUE(code.plan.objects[1].culling) << "the knot is marched, culled by its bound";
+}
+
+TEST(RayCulling, AThinTorusIsStillMarched)
+{
+    const SceneShaderCode code = specialized("0 0 torus 0 1 0  2 0.1\n", 1);
+    EXPECT_FALSE(code.plan.objects.at(0).exact)
+        << "float32 leaves the quartic of a torus this thin too few digits";
+    EXPECT_TRUE(code.marchesAnything);
 }
 
 TEST(RayCulling, AShapeInsideACsgNodeIsStillMarched)
@@ -234,10 +243,10 @@ TEST(RayCulling, PiecesBeyondThirtyTwoAreNeverCulled)
 {
     std::string objects;
     for (int i = 0; i < 40; ++i)
-        objects += "0 0 torus " + std::to_string(3 * i) + " 0 0  1 0.25\n";
+        objects += "0 0 rounded_box " + std::to_string(3 * i) + " 0 0  1 1 1  0.2\n";
     const SceneShaderCode code = specialized(objects, 40);
     EXPECT_EQ(culledObjects(code), 32);
-    EXPECT_FALSE(code.plan.everyObjectCulled) << "tori without a bit may be met anywhere";
+    EXPECT_FALSE(code.plan.everyObjectCulled) << "rounded boxes without a bit may be met anywhere";
 }
 
 TEST(RayCulling, EditingAValueChangesOnlyUniforms)
@@ -245,12 +254,12 @@ TEST(RayCulling, EditingAValueChangesOnlyUniforms)
     const SceneShaderCode before = specialized("0 0 polyhedron 1  0 1 0 2\n"
                                                "0 0 sphere 1 2 3 0.5\n"
                                                "0 0 cone 0 2 0  3 4\n"
-                                               "0 0 torus 0 1 0  2 0.5\n",
+                                               "0 0 rounded_box 0 1 0  1 1 1  0.2\n",
                                                4);
     const SceneShaderCode after = specialized("0 0 polyhedron 1  0 1 0.5 7\n"
                                               "0 0 sphere -1 0 3 2\n"
                                               "0 0 cone 1 1 1  1 2\n"
-                                              "0 0 torus 1 2 0  3 0.25\n",
+                                              "0 0 rounded_box 1 2 0  2 1 1  0.3\n",
                                               4);
     EXPECT_EQ(before.sceneFunctions, after.sceneFunctions);
     EXPECT_EQ(before.defines, after.defines);
