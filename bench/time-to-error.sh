@@ -1,13 +1,17 @@
 #!/usr/bin/env bash
 # Time to a given error, ours against the original program, side by side on this machine:
 # for the original's scenes that the exact-intersection reference can render (scene1,
-# scene2, scene7), both programs render 16, 64, 256 and 1024 spp at 160x120, alternating,
+# scene2, scene7, and since 2026-12-03 scene3, whose torus is met as a quartic, and scene5,
+# whose csg declares its intersection: for those two shapes the reference and our default
+# share the intersection code, which tests/render/ExactShapesTest.cpp judges instead), both
+# programs render 16, 64, 256 and 1024 spp at 160x120, alternating,
 # and each image's relative RMSE against the exact reference (this program with
 # --exact-geometry, seeds 11 and 12, 1024 spp each) is set against its render time. Speed
 # bought with bias shows here as an error that stops falling.
 #
 #   bench/time-to-error.sh [RAYTRACER=build/raytracer]
 #
+# SCENES names the scenes (default: scene1 scene2 scene3 scene5 scene7).
 # Prints the machine and a Markdown table per scene, then the time each program needs to
 # reach 5 %, 2 % and 1 % (interpolated on its measured curve; "never" past its last point).
 # PEER names the peer's folder (default ../shared/peers/frag-pathtracer).
@@ -23,7 +27,7 @@ mkdir -p "$work"
 cp "$peer"/source/scenes/* "$work/"
 results="$work/results.csv"
 echo "scene,program,spp,seconds,image" >"$results"
-for scene in scene1 scene2 scene7; do
+for scene in ${SCENES:-scene1 scene2 scene3 scene5 scene7}; do
   for seed in 11 12; do
     (cd "$work" && "$raytracer" "$scene.in" 160 120 --spp 1024 --seed "$seed" --exact-geometry \
       --headless --quiet --output "$work/$scene-exact-$seed.pfm" >/dev/null)

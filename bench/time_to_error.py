@@ -50,15 +50,27 @@ def main():
         print(f"{scene} (the reference's own noise, taken out: rel RMSE {floor:.4f}; the "
               f"image means: reference {mean:.4f})\n")
         curves = {}
+        notes = []
+
+        def error(row):
+            # A pixel that is not finite (NaN, infinite) is wrong however it is counted: the
+            # error is taken over the others, and the pixels are named.
+            image = read_pfm(row["image"])
+            finite = np.isfinite(image).all(axis=2)
+            if not finite.all():
+                notes.append(f"{row['program']}'s image at {row['spp']} spp has "
+                             f"{int((~finite).sum())} pixels that are not finite; its error "
+                             "is taken over the others")
+            squared = ((image - reference) ** 2)[finite]
+            return math.sqrt(max(np.mean(squared) - floor_mse, 0.0)) / mean
+
         for program in ("original", "ours"):
             mine = sorted((r for r in rows if r["scene"] == scene and r["program"] == program),
                           key=lambda r: int(r["spp"]))
-            curves[program] = [(float(r["seconds"]),
-                                math.sqrt(max(np.mean((read_pfm(r["image"]) - reference) ** 2)
-                                              - floor_mse, 0.0)) / mean, int(r["spp"]))
-                               for r in mine]
+            curves[program] = [(float(r["seconds"]), error(r), int(r["spp"])) for r in mine]
             if mine:
-                means = read_pfm(mine[-1]["image"]).mean() / mean - 1.0
+                last = read_pfm(mine[-1]["image"])
+                means = last[np.isfinite(last).all(axis=2)].mean() / mean - 1.0
                 print(f"{program}'s image at {mine[-1]['spp']} spp: mean {100 * means:+.1f} % "
                       "against the reference")
         print()
@@ -66,6 +78,8 @@ def main():
         print("|---|---|---|---|---|")
         for (to, eo, n), (tu, eu, _) in zip(curves["original"], curves["ours"]):
             print(f"| {n} | {to:.2f} | {eo:.4f} | {tu:.2f} | {eu:.4f} |")
+        for note in notes:
+            print(f"- {note}")
         print()
         cells = [scene]
         for target in targets:
