@@ -1,7 +1,7 @@
 // Specialised versus general shader, per scene: million paths per second, compile and link
 // time, and first-frame time (llvmpipe generates machine code at the first draw), each the
-// median of several runs at one resolution. Also compares with the original program's
-// throughput measured on the same kind of machine (see docs/PERFORMANCE.md).
+// median of several runs at one resolution. (Against the original program: only side by
+// side, on this machine, in one run: bench/side-by-side.sh.)
 //
 //   bench_shader_variants [--size W H] [--seconds S] [--samples-per-frame K] [--repeats R]
 //                         [--breakdown] [--markdown] SCENE...
@@ -20,7 +20,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -76,12 +75,6 @@ Measurement measure(const scene::Scene& scene, render::ShaderVariant variant, in
     return result;
 }
 
-// Mpaths/s of the original program (2015) on 2 cores with Mesa llvmpipe at 400x300, its own
-// seven scenes; measured by the team and given in issue 6.
-const std::map<std::string, double> kOriginalMegapathsPerSecond = {
-    {"scene1", 0.71}, {"scene2", 0.82}, {"scene3", 1.90}, {"scene4", 0.82},
-    {"scene5", 2.25}, {"scene6", 0.23}, {"scene7", 1.12}};
-
 }  // namespace
 
 int main(int argc, char* argv[])
@@ -133,10 +126,10 @@ int main(int argc, char* argv[])
         markdown ? "| scene | general Mpaths/s | specialised Mpaths/s | speed-up | specialised "
                    "without culling | culling's speed-up | compile+link "
                    "general / specialised (s) | first-draw code generation general / "
-                   "specialised (s) | original Mpaths/s | ours / original |\n"
-                   "|---|---|---|---|---|---|---|---|---|---|\n"
+                   "specialised (s) |\n"
+                   "|---|---|---|---|---|---|---|---|\n"
                  : "scene                 general  special  speed-up  unculled  culling  "
-                   "compile g/s (s)  first draw g/s (s)   original  ours/orig\n";
+                   "compile g/s (s)  first draw g/s (s)\n";
     std::fputs(header, stdout);
     for (const std::string& path : scenes) {
         const scene::Scene scene = scene::parseSceneFile(path);
@@ -174,25 +167,14 @@ int main(int argc, char* argv[])
         const double g = median(generalRate);
         const double s = median(specialRate);
         const double u = median(unculledRate);
-        const auto original = kOriginalMegapathsPerSecond.find(name);
-        char originalText[32] = "-";
-        char ratioText[32] = "-";
-        if (original != kOriginalMegapathsPerSecond.end()) {
-            std::snprintf(originalText, sizeof originalText, "%.2f", original->second);
-            std::snprintf(ratioText, sizeof ratioText, "%.2fx", s / original->second);
-        }
         if (markdown)
-            std::printf("| %s | %.3f | %.3f | %.2fx | %.3f | %.2fx | %.2f / %.2f | %.2f / %.2f | "
-                        "%s | %s |\n",
+            std::printf("| %s | %.3f | %.3f | %.2fx | %.3f | %.2fx | %.2f / %.2f | %.2f / %.2f |\n",
                         name.c_str(), g, s, s / g, u, s / u, median(generalCompile),
-                        median(specialCompile), median(generalFirst), median(specialFirst),
-                        originalText, ratioText);
+                        median(specialCompile), median(generalFirst), median(specialFirst));
         else
-            std::printf("%-20s  %7.3f  %7.3f  %7.2fx  %8.3f  %6.2fx  %6.2f / %-6.2f  %7.2f / %-7.2f  "
-                        "%8s  %9s\n",
+            std::printf("%-20s  %7.3f  %7.3f  %7.2fx  %8.3f  %6.2fx  %6.2f / %-6.2f  %7.2f / %-7.2f\n",
                         name.c_str(), g, s, s / g, u, s / u, median(generalCompile),
-                        median(specialCompile), median(generalFirst), median(specialFirst),
-                        originalText, ratioText);
+                        median(specialCompile), median(generalFirst), median(specialFirst));
         if (breakdown)
             std::printf("%-20s  features only %.3f, shapes only %.3f Mpaths/s\n", "",
                         median(featuresRate), median(shapesRate));
