@@ -9,13 +9,17 @@
 // (20 000 directions sampled on the CPU reached 1.801 at most), and the bound declares 1.85.
 // @bound 1.85
 
-// The distance from p to the bond from a to b of the given radius; `scaledBond` is
-// (b - a) / |b - a|^2, so that the projection needs no division.
-float latticeBond(vec3 p, vec3 a, vec3 scaledBond, vec3 bond, float radius)
+// The distance from p to the bond from a to b, of the lattice's bond radius. Every bond has
+// the same length, the tetrahedron's edge 2 sqrt(2) e for atoms e (1, 1, 1) from the centre:
+// the projection multiplies by its inverse square instead of dividing.
+const float kLatticeCorner = 1.3 / 1.7320508;
+const float kLatticeInverseBondLengthSquared = 1.0 / (8.0 * kLatticeCorner * kLatticeCorner);
+float latticeBond(vec3 p, vec3 a, vec3 b)
 {
     vec3 pa = p - a;
-    float along = clamp(dot(pa, scaledBond), 0.0, 1.0);
-    return length(pa - bond * along) - radius;
+    vec3 bond = b - a;
+    float along = clamp(dot(pa, bond) * kLatticeInverseBondLengthSquared, 0.0, 1.0);
+    return length(pa - bond * along) - 0.175;
 }
 
 // The atoms turned 63 degrees about z, then about y (the point's turns about y then z,
@@ -37,37 +41,27 @@ float lattice(vec3 p, vec3 x)
 {
     vec3 q = p - x;
     const float atomRadius = 0.5;
-    const float bondRadius = 0.175;
     const float blend = 0.35;
     // A regular tetrahedron with its centre at the origin, atoms 1.3 from the centre. Written
     // out rather than looped over an array: software rasterisers run local arrays slowly.
-    const float e = 1.3 / 1.7320508;
+    const float e = kLatticeCorner;
     vec3 a = latticeAtom(vec3(e, e, e));
     vec3 b = latticeAtom(vec3(e, -e, -e));
     vec3 c = latticeAtom(vec3(-e, e, -e));
     vec3 d = latticeAtom(vec3(-e, -e, e));
-    // Every bond has the same length, the tetrahedron's edge 2 sqrt(2) e.
-    const float inverseBondLengthSquared = 1.0 / (8.0 * e * e);
 
     // The nearest atom's centre, by squared distances: one square root instead of four.
     vec3 pa = q - a;
     vec3 pb = q - b;
     vec3 pc = q - c;
     vec3 pd = q - d;
-    float atoms = sqrt(min(min(dot(pa, pa), dot(pb, pb)), min(dot(pc, pc), dot(pd, pd)))) -
-                  atomRadius;
-    float result = atoms;
-    result = opSmoothUnionPoly(
-        result, latticeBond(q, a, (b - a) * inverseBondLengthSquared, b - a, bondRadius), blend);
-    result = opSmoothUnionPoly(
-        result, latticeBond(q, a, (c - a) * inverseBondLengthSquared, c - a, bondRadius), blend);
-    result = opSmoothUnionPoly(
-        result, latticeBond(q, a, (d - a) * inverseBondLengthSquared, d - a, bondRadius), blend);
-    result = opSmoothUnionPoly(
-        result, latticeBond(q, b, (c - b) * inverseBondLengthSquared, c - b, bondRadius), blend);
-    result = opSmoothUnionPoly(
-        result, latticeBond(q, b, (d - b) * inverseBondLengthSquared, d - b, bondRadius), blend);
-    result = opSmoothUnionPoly(
-        result, latticeBond(q, c, (d - c) * inverseBondLengthSquared, d - c, bondRadius), blend);
+    float result = sqrt(min(min(dot(pa, pa), dot(pb, pb)), min(dot(pc, pc), dot(pd, pd)))) -
+                   atomRadius;
+    result = opSmoothUnionPoly(result, latticeBond(q, a, b), blend);
+    result = opSmoothUnionPoly(result, latticeBond(q, a, c), blend);
+    result = opSmoothUnionPoly(result, latticeBond(q, a, d), blend);
+    result = opSmoothUnionPoly(result, latticeBond(q, b, c), blend);
+    result = opSmoothUnionPoly(result, latticeBond(q, b, d), blend);
+    result = opSmoothUnionPoly(result, latticeBond(q, c, d), blend);
     return result;
 }

@@ -379,6 +379,16 @@ bool exactTorus(vec3 origin, vec3 direction, vec3 center, float majorRadius,
     return true;
 }
 
+// A user SDF's own intersection (its file's // @intersect function) taken into `hit`: the
+// function's result, crossing and outward normal, evaluated first (GLSL evaluates a call's
+// arguments from left to right).
+bool exactUserCrossing(bool found, float t, vec3 normal, int object, inout ExactHit hit)
+{
+    if (found)
+        hit = ExactHit(t, object, normal);
+    return found;
+}
+
 // Disk (centre, radius) = vec4 with unit normal n: the ray's crossing of its plane, if it is
 // within the radius. It faces the ray.
 bool exactDisk(vec3 origin, vec3 direction, vec4 disk, vec3 normal, float tMin, int object,

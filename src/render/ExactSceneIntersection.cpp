@@ -1,5 +1,6 @@
 #include "render/ExactSceneIntersection.h"
 
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 
@@ -28,16 +29,27 @@ std::string shapeName(const Geometry& geometry)
     return "a CSG solid";
 }
 
+// `meet(tMin, hit)`: a bool expression that replaces the ExactHit `hit` by the shape's first
+// crossing in (tMin, hit.t) of the ray (o, d) of its own frame, true when it did.
+using MeetInFrame = std::function<std::string(const std::string&, const std::string&)>;
+
+// The usual call of an exact* function of exact_shapes.glsl, `callHead` up to its tMin.
+MeetInFrame exactCall(const std::string& callHead, const std::string& id)
+{
+    return [callHead, id](const std::string& tMin, const std::string& hit) {
+        return callHead + tMin + ", " + id + ", " + hit + ")";
+    };
+}
+
 // A shape intersected in its own frame: the ray is taken there (a similarity keeps it a ray,
-// with distances divided by the scale), the hit brought back. `callHead` is the call up to
-// its tMin argument.
-std::string inFrame(const std::optional<Transform>& transform, const std::string& callHead,
-                    const std::string& id, const ShapeParameterAllocator& allocate)
+// with distances divided by the scale), the hit brought back. `declarations` open the block.
+std::string inFrame(const std::optional<Transform>& transform, const MeetInFrame& meet,
+                    const ShapeParameterAllocator& allocate, const std::string& declarations = "")
 {
     std::ostringstream out;
     if (!transform) {
-        out << "    {\n        vec3 o = origin;\n        vec3 d = direction;\n        "
-            << callHead << "tMin, " << id << ", hit);\n    }\n";
+        out << "    {\n" << declarations << "        vec3 o = origin;\n        vec3 d = direction;\n"
+            << "        " << meet("tMin", "hit") << ";\n    }\n";
         return out.str();
     }
     const Transform& t = *transform;
@@ -45,11 +57,11 @@ std::string inFrame(const std::optional<Transform>& transform, const std::string
                                 glm::vec4(t.rotation[2], 0.0f), glm::vec4(t.translation, t.scale)});
     const std::string f = std::to_string(frame);
     out << "    {\n"
-        << "        float scale = " << slot(frame + 3) << ".w;\n"
+        << declarations << "        float scale = " << slot(frame + 3) << ".w;\n"
         << "        vec3 o = toLocalPoint(origin, " << f << ");\n"
         << "        vec3 d = toLocalDirection(direction, " << f << ");\n"
         << "        ExactHit local = ExactHit(hit.t / scale, hit.object, hit.normal);\n"
-        << "        if (" << callHead << "tMin / scale, " << id << ", local))\n"
+        << "        if (" << meet("tMin / scale", "local") << ")\n"
         << "            hit = ExactHit(local.t * scale, local.object, toWorldDirection(local.normal, "
         << f << "));\n"
         << "    }\n";
@@ -96,53 +108,45 @@ std::optional<std::string> exactIntersectionStatements(const Shape& shape, std::
     } else if (const auto* box = std::get_if<Box>(&geometry)) {
         const int s =
             allocate({glm::vec4(box->center, 0.0f), glm::vec4(box->halfExtents, 0.0f)});
-        out << inFrame(transform, "exactBox(o, d, " + slot(s) + ".xyz, " + slot(s + 1) + ".xyz, ",
-                       id, allocate);
+        out << inFrame(transform,
+                       exactCall("exactBox(o, d, " + slot(s) + ".xyz, " + slot(s + 1) + ".xyz, ", id),
+                       allocate);
     } else if (const auto* cylinder = std::get_if<Cylinder>(&geometry)) {
         const int s = allocate({glm::vec4(cylinder->center, cylinder->radius),
                                 glm::vec4(cylinder->halfHeight, 0.0f, 0.0f, 0.0f)});
         out << inFrame(transform,
-                       "exactCappedCylinder(o, d, " + slot(s) + ".xyz, " + slot(s) + ".w, " +
-                           slot(s + 1) + ".x, ",
-                       id, allocate);
+                       exactCall("exactCappedCylinder(o, d, " + slot(s) + ".xyz, " + slot(s) +
+                                     ".w, " + slot(s + 1) + ".x, ",
+                                 id),
+                       allocate);
     } else if (const auto* torus = std::get_if<Torus>(&geometry);
                torus && torus->minorRadius >= kThinnestExactTorus * torus->majorRadius) {
         const int s = allocate({glm::vec4(torus->center, torus->majorRadius),
                                 glm::vec4(torus->minorRadius, 0.0f, 0.0f, 0.0f)});
         out << inFrame(transform,
-                       "exactTorus(o, d, " + slot(s) + ".xyz, " + slot(s) + ".w, " +
-                           slot(s + 1) + ".x, ",
-                       id, allocate);
+                       exactCall("exactTorus(o, d, " + slot(s) + ".xyz, " + slot(s) + ".w, " +
+                                     slot(s + 1) + ".x, ",
+                                 id),
+                       allocate);
     } else if (const auto* cone = std::get_if<Cone>(&geometry)) {
         const glm::vec2 unit = glm::normalize(cone->slope);
         const int s = allocate({glm::vec4(cone->apex, 0.0f), glm::vec4(unit, 0.0f, 0.0f)});
-        out << inFrame(transform, "exactCone(o, d, " + slot(s) + ".xyz, " + slot(s + 1) + ".xy, ",
-                       id, allocate);
+        out << inFrame(transform,
+                       exactCall("exactCone(o, d, " + slot(s) + ".xyz, " + slot(s + 1) + ".xy, ", id),
+                       allocate);
     } else if (const auto* user = std::get_if<UserSdf>(&geometry);
                user && user->intersectFunction) {
         // The file's own intersection (// @intersect): bool F(origin, direction, x, tMin,
         // tMax, out t, out normal), in the frame its distance function is evaluated in.
         const int s = allocate({glm::vec4(user->position, 0.0f)});
-        std::string local = "        vec3 o = origin;\n        vec3 d = direction;\n"
-                            "        float scale = 1.0;\n";
-        std::string toWorld = "outward";
-        if (transform) {
-            const Transform& t = *transform;
-            const int frame =
-                allocate({glm::vec4(t.rotation[0], 0.0f), glm::vec4(t.rotation[1], 0.0f),
-                          glm::vec4(t.rotation[2], 0.0f), glm::vec4(t.translation, t.scale)});
-            const std::string f = std::to_string(frame);
-            local = "        vec3 o = toLocalPoint(origin, " + f + ");\n" +
-                    "        vec3 d = toLocalDirection(direction, " + f + ");\n" +
-                    "        float scale = " + slot(frame + 3) + ".w;\n";
-            toWorld = "toWorldDirection(outward, " + f + ")";
-        }
-        out << "    {\n"
-            << local << "        float crossing;\n        vec3 outward;\n"
-            << "        if (" << *user->intersectFunction << "(o, d, " << slot(s)
-            << ".xyz, tMin / scale, hit.t / scale, crossing, outward))\n"
-            << "            hit = ExactHit(crossing * scale, " << id << ", " << toWorld << ");\n"
-            << "    }\n";
+        const std::string function = *user->intersectFunction;
+        const MeetInFrame meet = [&](const std::string& tMin, const std::string& hit) {
+            return "exactUserCrossing(" + function + "(o, d, " + slot(s) + ".xyz, " + tMin +
+                   ", " + hit + ".t, crossing, outward), crossing, outward, " + id + ", " + hit +
+                   ")";
+        };
+        out << inFrame(transform, meet, allocate,
+                       "        float crossing;\n        vec3 outward;\n");
     } else {
         return std::nullopt;
     }

@@ -52,6 +52,21 @@ struct ConeSolid {
     }
 };
 
+// Whether the ray meets the solid whose exact distance `solid.distance` is, sphere traced in
+// double precision up to 2000 units.
+template <typename Solid>
+bool sphereTracedHit(const Solid& solid, const glm::dvec3& origin, const glm::dvec3& direction)
+{
+    double t = 0.0;
+    for (int step = 0; step < 100000 && t < 2000.0; ++step) {
+        const double d = solid.distance(origin + t * direction);
+        if (d < 1e-9)
+            return true;
+        t += std::max(d, 1e-7);
+    }
+    return false;
+}
+
 // shaders/csg.glsl's distance, in double precision, turned by `toLocal` about the origin.
 struct DrilledRoundedCube {
     glm::dmat3 toLocal{1.0};
@@ -72,14 +87,7 @@ struct DrilledRoundedCube {
 
     bool metBy(const glm::dvec3& origin, const glm::dvec3& direction) const
     {
-        double t = 0.0;
-        for (int step = 0; step < 100000 && t < 20.0; ++step) {
-            const double d = distance(origin + t * direction);
-            if (d < 1e-9)
-                return true;
-            t += std::max(d, 1e-7);
-        }
-        return false;
+        return sphereTracedHit(*this, origin, direction);
     }
 };
 
@@ -99,14 +107,7 @@ struct TorusSolid {
 
     bool metBy(const glm::dvec3& origin, const glm::dvec3& direction) const
     {
-        double t = 0.0;
-        for (int step = 0; step < 100000 && t < 2000.0; ++step) {
-            const double d = distance(origin + t * direction);
-            if (d < 1e-9)
-                return true;
-            t += std::max(d, 1e-7);
-        }
-        return false;
+        return sphereTracedHit(*this, origin, direction);
     }
 };
 
