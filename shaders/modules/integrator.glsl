@@ -9,7 +9,9 @@ uniform int uRussianRouletteDepth;  // scattering events that roulette never end
 // Smallest cosine between wo and the facing normal (see Surface.facingNormal).
 const float kMinimumViewCosine = 1e-4;
 
-Surface surfaceAt(int object, vec3 p, vec3 normal, vec3 wo, float insideSign, float footprint)
+// `uPattern`: the pigment's random choice (pigmentColor), uniform on [0, 1).
+Surface surfaceAt(int object, vec3 p, vec3 normal, vec3 wo, float insideSign, float footprint,
+                  float uPattern)
 {
     int finish = objectFinish(object);
     Surface s;
@@ -21,7 +23,7 @@ Surface surfaceAt(int object, vec3 p, vec3 normal, vec3 wo, float insideSign, fl
     if (cosView < kMinimumViewCosine)
         facing = normalize(facing + (kMinimumViewCosine - cosView) * wo);
     s.facingNormal = facing;
-    s.color = pigmentColor(objectPigment(object), p, normal, footprint, 0.0);
+    s.color = pigmentColor(objectPigment(object), p, normal, footprint, 0.0, uPattern);
     s.emission = finishEmission(finish);
     s.phongExponent = finishPhongExponent(finish);
     s.material = finishMaterial(finish);
@@ -98,7 +100,17 @@ bool continuePath(inout PathState path)
     float footprint = hit.footprint;
     float tolerance = hit.tolerance;
     vec3 wo = -direction;
-    Surface s = surfaceAt(hit.object, p, hit.normal, wo, insideSign, footprint);
+    // A scattering event's pattern takes its own stratified dimension; the crossings of
+    // index-1 surfaces between two events (which share the event's number) take numbers of
+    // the random stream, since two vertices of one path looked up with one number would
+    // correlate their colours and bias their product.
+#if HAS_TEXTURE_PIGMENT
+    float uPattern = isNullInterface(hit.object) ? random01()
+                                                 : bounceSample1D(path.scattering, SAMPLE_PATTERN);
+#else
+    const float uPattern = 0.0;
+#endif
+    Surface s = surfaceAt(hit.object, p, hit.normal, wo, insideSign, footprint, uPattern);
 
 #if HAS_SPHERE_LIGHTS
     // Emission, seen from outside the sphere, only along rays that truly meet it: the march

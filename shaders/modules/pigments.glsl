@@ -18,45 +18,57 @@ vec3 checkerPigment(vec3 inward, vec3 first, vec3 second, float size)
 
 #if HAS_TEXTURE_PIGMENT
 // Triplanar mapping (the seed's section 2.7): the image projected along each axis, one tile
-// every `tileSize` units, blended by the normal's components. Filtering is trilinear; the
-// mip level comes from the footprint of the path's ray cone at the point (explicit LOD: the
-// screen-space derivatives GLSL offers mean nothing for a path's later vertices).
-// Only the projections with a weight are looked up, one per turn of a loop: llvmpipe
-// executes both sides of every branch, so three lookups written out would all be paid at
-// every point, while the loop goes round only as often as some pixel of the SIMD group
-// needs (once where every pixel sees an axis-aligned plane, such as a floor).
-vec3 triplanarPigment(vec3 p, vec3 normal, float layer, float tileSize, float footprint)
+// every `tileSize` units, blended by the normal's components. The blend is taken in
+// expectation: one projection is looked up, chosen with probability equal to its weight by
+// `uProjection` (uniform on [0, 1)), so the estimate of every path is unbiased for the
+// blended colour, which enters it linearly (stochastic texture filtering, Pharr et al.,
+// "Filtering After Shading With Stochastic Texture Filtering", 2024). A texture lookup is
+// the dearest single thing a path does on llvmpipe, and it runs for all 8 pixels of a SIMD
+// group whenever one of them needs it: looking up every projection with a weight cost a
+// group as many lookups as its pixel with the most (3 on a sphere), 1.13x scene 1's time and
+// more on curved textured objects, for no gain in expectation. The sampler stratifies the
+// choice over a pixel's samples, so it adds little noise (docs/PERFORMANCE.md). Filtering is
+// trilinear; the mip level comes from the footprint of the path's ray cone at the point
+// (explicit LOD: the screen-space derivatives GLSL offers mean nothing for a path's later
+// vertices).
+vec3 triplanarPigment(vec3 p, vec3 normal, float layer, float tileSize, float footprint,
+                      float uProjection)
 {
     vec3 weights = abs(normal);
     weights /= max(weights.x + weights.y + weights.z, 1e-6);
     vec3 q = p / tileSize;
     float lod = log2(max(footprint / tileSize * uPigmentTextureSize, 1e-6));
-    vec3 color = vec3(0.0);
-    int axis = weights.x > 0.0 ? 0 : (weights.y > 0.0 ? 1 : 2);
-    for (int lookup = 0; lookup < 3 && axis < 3; ++lookup) {
-        vec2 projected = axis == 0 ? q.yz : (axis == 1 ? q.xz : q.xy);
-        float weight = axis == 0 ? weights.x : (axis == 1 ? weights.y : weights.z);
-        color += weight * textureLod(uPigmentTextures, vec3(projected, layer), lod).rgb;
-        axis = (axis < 1 && weights.y > 0.0) ? 1 : ((axis < 2 && weights.z > 0.0) ? 2 : 3);
-    }
-    return color;
+    // Beyond the weights' sum, which rounding can leave short of 1, the last projection
+    // with a weight.
+    int axis = weights.z > 0.0 ? 2 : (weights.y > 0.0 ? 1 : 0);
+    if (uProjection < weights.x)
+        axis = 0;
+    else if (uProjection < weights.x + weights.y)
+        axis = 1;
+    vec2 projected = axis == 0 ? q.yz : (axis == 1 ? q.xz : q.xy);
+    return textureLod(uPigmentTextures, vec3(projected, layer), lod).rgb;
 }
 #endif
 
 // --- each kind's colour ------------------------------------------------------------------
-// vec3 <kind>PigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface):
+// vec3 <kind>PigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface,
+//                         float uPattern):
 // the colour at surface point p with outward normal n; `footprint` is the ray cone's width
 // there and `offSurface` how far outside the surface p may lie (0 for a point met on it).
+// `uPattern`, uniform on [0, 1) from the sampler, makes the random choice of a pattern that
+// is right in expectation (a texture's projection); the others ignore it.
 // pigmentColor, which chooses among them by the pigment's kind, is generated from the
 // pigment table (render/KindDispatchers.cpp) and follows this module.
 
-vec3 solidPigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface)
+vec3 solidPigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface,
+                       float uPattern)
 {
     return pigmentFirstColor(pigment);
 }
 
 #if HAS_CHECKER_PIGMENT
-vec3 checkerPigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface)
+vec3 checkerPigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface,
+                         float uPattern)
 {
     // A hair, above float rounding at p, and never a hit tolerance for a point on the
     // surface: an inset that long moves the lookup across cube boundaries on a tilted
@@ -72,9 +84,10 @@ vec3 checkerPigmentColor(int pigment, vec3 p, vec3 n, float footprint, float off
 #endif
 
 #if HAS_TEXTURE_PIGMENT
-vec3 texturePigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface)
+vec3 texturePigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface,
+                         float uPattern)
 {
     return triplanarPigment(p, n, pigmentTextureLayer(pigment), pigmentSize(pigment),
-                            footprint);
+                            footprint, uPattern);
 }
 #endif

@@ -79,7 +79,7 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
         if (!isNullInterface(hit.object))
             return vec3(0.0);
         transmittance *= pigmentColor(objectPigment(hit.object), s.position + hit.t * wi, -wi,
-                                      0.0, 0.0);
+                                      0.0, 0.0, random01());
         from = hit.t + exactRayStart();
     }
     return vec3(0.0);

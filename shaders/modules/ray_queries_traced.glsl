@@ -252,7 +252,7 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
             return vec3(0.0);
 #if HAS_NULL_INTERFACES
         transmittance *= pigmentColor(objectPigment(wall.object), origin + wall.t * wi, -wi,
-                                      0.0, 0.0);
+                                      0.0, 0.0, random01());
         from = wall.t + tolerance;
 #endif
     }
@@ -294,7 +294,8 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
 #endif
 #if HAS_NULL_INTERFACES
         if (nearest >= 0 && isNullInterface(nearest)) {
-            transmittance *= pigmentColor(objectPigment(nearest), p, -wi, 0.0, tolerance);
+            transmittance *= pigmentColor(objectPigment(nearest), p, -wi, 0.0, tolerance,
+                                          random01());
             // Step through the surface; where the step only grazed it, the march goes on
             // from outside and crosses further along.
             t += 2.0 * tolerance;

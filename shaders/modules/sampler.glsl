@@ -28,13 +28,14 @@ const int SAMPLER_SOBOL = 1;
 const int SAMPLE_PIXEL = 0;  // 2D: the point in the pixel
 
 // A path's decisions. The point in the pixel is dimension 0; scattering event b (counted
-// from 0 at the camera ray's hit) makes the decisions below, dimension 1 + 5 b + decision.
+// from 0 at the camera ray's hit) makes the decisions below, dimension 1 + 6 b + decision.
 const int SAMPLE_LIGHT_SELECTION = 0;  // 1D: which light next-event estimation samples
 const int SAMPLE_LIGHT_POINT = 1;      // 2D: the direction in the light's cone
 const int SAMPLE_BSDF_LOBE = 2;        // 1D: Blinn-Phong's lobe, glass's reflect or refract
 const int SAMPLE_BSDF_DIRECTION = 3;   // 2D: the scattered direction
 const int SAMPLE_ROULETTE = 4;         // 1D: Russian roulette
-const int kDecisionsPerBounce = 5;
+const int SAMPLE_PATTERN = 5;          // 1D: a pigment's random choice (a texture's projection)
+const int kDecisionsPerBounce = 6;
 // Past this many scattering events the decisions use the random stream: the light that
 // arrives after several diffuse bounces is smooth, and the stratification of one of many
 // dimensions buys little there (docs/ACCURACY.md measures where the gain stops).

@@ -83,13 +83,16 @@ std::string pigmentDispatcher()
     std::ostringstream out;
     out << "// Generated from the pigment table (scene/Pigments.h). The pigment's colour at\n"
            "// surface point p with outward normal n; `footprint` is the ray cone's width there\n"
-           "// and `offSurface` how far outside the surface p may lie (0 for a point met on it).\n"
+           "// and `offSurface` how far outside the surface p may lie (0 for a point met on it);\n"
+           "// `uPattern`, uniform on [0, 1) from the sampler, makes a random pattern's choice\n"
+           "// (a texture's projection): the colour is then right in expectation.\n"
            "// The fallback's colour comes first and unconditionally, so that a record read\n"
            "// the other kinds repeat (the first colour) is read once: llvmpipe runs every\n"
            "// branch some pixel of its 8 takes, each with its own reads.\n"
-           "vec3 pigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface)\n"
+           "vec3 pigmentColor(int pigment, vec3 p, vec3 n, float footprint, float offSurface,\n"
+           "                  float uPattern)\n"
            "{\n";
-    const std::string arguments = "(pigment, p, n, footprint, offSurface)";
+    const std::string arguments = "(pigment, p, n, footprint, offSurface, uPattern)";
     out << "    vec3 color = " << pigments.front().glslFunction << arguments << ";\n";
     if (pigments.size() > 1)
         out << "    int kind = pigmentKind(pigment);\n";

@@ -55,8 +55,9 @@ struct PigmentDescription {
     const char* keyword;
     const char* featureSwitch;  // 1 where the shader has the pigment; nullptr: always there
     PigmentReader read;
-    // vec3 NAME(int pigment, vec3 p, vec3 n, float footprint, float offSurface), as
-    // pigmentColor (shaders/modules/pigments.glsl says what the arguments are)
+    // vec3 NAME(int pigment, vec3 p, vec3 n, float footprint, float offSurface,
+    // float uPattern), as pigmentColor (shaders/modules/pigments.glsl says what the arguments
+    // are)
     const char* glslFunction;
 };
 

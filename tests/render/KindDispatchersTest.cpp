@@ -94,7 +94,7 @@ TEST(PigmentDispatcher, EveryKindButTheFallbackIsColouredByItsCodeUnderItsSwitch
     const std::string color = functionText(pigmentDispatcher(), "vec3 pigmentColor(");
     ASSERT_FALSE(color.empty());
     const auto& pigments = pigmentDescriptions();
-    const std::string arguments = "(pigment, p, n, footprint, offSurface)";
+    const std::string arguments = "(pigment, p, n, footprint, offSurface, uPattern)";
     EXPECT_NE(color.find("    vec3 color = " + (pigments.front().glslFunction + arguments) + ";"),
               std::string::npos)
         << "the fallback is not the colour every other kind replaces:\n" << color;

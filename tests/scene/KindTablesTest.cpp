@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -164,7 +165,13 @@ TEST(PigmentKinds, CodesAreTheirPlaceInTheListAndKeywordsAreDistinct)
 // generated pigmentColor to call; each but the fallback under its switch.
 TEST(PigmentKinds, EachDefinesItsColourInPigmentsGlslAndAllButTheFallbackHaveASwitch)
 {
-    const std::string glsl = readModule("pigments.glsl");
+    // Signatures are looked for with every run of white space (a wrapped line) as one space.
+    std::string glsl;
+    for (const char c : readModule("pigments.glsl"))
+        if (!std::isspace(static_cast<unsigned char>(c)))
+            glsl += c;
+        else if (glsl.empty() || glsl.back() != ' ')
+            glsl += ' ';
     const auto& pigments = pigmentDescriptions();
     EXPECT_EQ(pigments.front().featureSwitch, nullptr);
     for (std::size_t i = 0; i < pigments.size(); ++i) {
@@ -176,7 +183,7 @@ TEST(PigmentKinds, EachDefinesItsColourInPigmentsGlslAndAllButTheFallbackHaveASw
         }
         const std::string signature = std::string("vec3 ") + pigment.glslFunction +
                                       "(int pigment, vec3 p, vec3 n, float footprint, "
-                                      "float offSurface)";
+                                      "float offSurface, float uPattern)";
         EXPECT_NE(glsl.find(signature), std::string::npos)
             << pigment.keyword << ": no \"" << signature << "\" in pigments.glsl";
     }
