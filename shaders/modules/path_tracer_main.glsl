@@ -29,6 +29,8 @@ bool isValidSample(vec3 value)
 
 void main()
 {
+    // Before any branch (scene_data.glsl).
+    readShapeParametersOnce();
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 estimate = texelFetch(uPreviousEstimate, pixel, 0);
     vec4 moments = texelFetch(uPreviousMoments, pixel, 0);

@@ -7,6 +7,26 @@
 // Shape parameters: one or more vec4 per primitive or transform.
 uniform vec4 uShapeParameters[SHAPE_PARAMETER_ARRAY_SIZE];
 
+#if SHAPE_PARAMETERS_READ_ONCE
+// llvmpipe reads a uniform with one load for all pixels of a SIMD group only where every
+// pixel of the group is known to run (no branch or loop that some pixel may have left);
+// elsewhere it gathers it pixel by pixel, with a bounds check, as if the index varied. The
+// generated shape code runs inside the path loop and the marches, so every parameter of every
+// step was gathered. The specialised shader reads them at constant indices: they are copied
+// once per pixel into variables at the start of main(), and the shape code reads those (the
+// name below). Scene 6: 1.16x (docs/PERFORMANCE.md). The copy is element by element: a whole-
+// array assignment is propagated back to the uniform by the compiler.
+vec4 shapeParametersReadOnce[SHAPE_PARAMETER_ARRAY_SIZE];
+void readShapeParametersOnce()
+{
+    for (int i = 0; i < SHAPE_PARAMETER_ARRAY_SIZE; ++i)
+        shapeParametersReadOnce[i] = uShapeParameters[i];
+}
+#define uShapeParameters shapeParametersReadOnce
+#else
+void readShapeParametersOnce() {}
+#endif
+
 // Per object: x = pigment, y = finish, z = sphere light index or -1, w = the start of its
 // shape program (general shader only).
 uniform ivec4 uObjects[OBJECT_ARRAY_SIZE];

@@ -106,6 +106,13 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
     // length is not 1 is its own field's (a user SDF that is no exact distance), which
     // backing off would not change: llvmpipe would pay a second gradient at every hit.
     define(out, "HAS_MARCHED_UNION", code.marchedUnion ? 1 : 0);
+    // The generated shape code reads the shape parameters at constant indices: they are read
+    // once per pixel, before any branch (scene_data.glsl). The interpreter's indices vary.
+    define(out, "SHAPE_PARAMETERS_READ_ONCE",
+           specializesShapes(variant) &&
+                   code.shapeParameters.size() <= kMostShapeParametersReadOnce
+               ? 1
+               : 0);
     out << shaderCodeDefines();
     code.defines = out.str();
     return code;

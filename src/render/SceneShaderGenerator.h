@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -27,6 +28,10 @@ enum class ShaderVariant {
 
 bool specializesFeatures(ShaderVariant variant);
 bool specializesShapes(ShaderVariant variant);
+
+// The most shape parameters (vec4s) the specialised shader reads into its own variables once
+// per pixel (scene_data.glsl says why); a larger scene reads them where they are used.
+constexpr std::size_t kMostShapeParametersReadOnce = 256;
 
 // Where the shader takes the environment's kind from. A specialised shader builds it in;
 // the window reads it from a uniform so that its panel can switch the environment off

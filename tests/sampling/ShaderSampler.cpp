@@ -24,7 +24,8 @@ render::ShaderSource probeSource()
     source.add("<preamble: the sampling probe>",
                "#version 330 core\n"
                "#define HAS_BLINN_PHONG 1\n#define HAS_MIRROR 0\n#define HAS_DIELECTRIC 0\n"
-               "#define SHAPE_PARAMETER_ARRAY_SIZE 1\n#define OBJECT_ARRAY_SIZE 1\n"
+               "#define SHAPE_PARAMETER_ARRAY_SIZE 1\n#define SHAPE_PARAMETERS_READ_ONCE 0\n"
+               "#define OBJECT_ARRAY_SIZE 1\n"
                "#define PIGMENT_ARRAY_SIZE 1\n#define FINISH_ARRAY_SIZE 1\n"
                "#define LIGHT_ARRAY_SIZE 1\n" +
                    render::shaderCodeDefines());
