@@ -9,6 +9,29 @@ uniform vec3 uCameraForward;
 uniform float uTanHalfFovy;
 uniform vec2 uImageSize;
 
+// Read once per pixel, before any branch (see scene_data.glsl): the code below sees copies.
+vec3 uCameraEyeReadOnce;
+vec3 uCameraRightReadOnce;
+vec3 uCameraUpReadOnce;
+vec3 uCameraForwardReadOnce;
+float uTanHalfFovyReadOnce;
+vec2 uImageSizeReadOnce;
+void readCameraUniformsOnce()
+{
+    uCameraEyeReadOnce = uCameraEye;
+    uCameraRightReadOnce = uCameraRight;
+    uCameraUpReadOnce = uCameraUp;
+    uCameraForwardReadOnce = uCameraForward;
+    uTanHalfFovyReadOnce = uTanHalfFovy;
+    uImageSizeReadOnce = uImageSize;
+}
+#define uCameraEye uCameraEyeReadOnce
+#define uCameraRight uCameraRightReadOnce
+#define uCameraUp uCameraUpReadOnce
+#define uCameraForward uCameraForwardReadOnce
+#define uTanHalfFovy uTanHalfFovyReadOnce
+#define uImageSize uImageSizeReadOnce
+
 vec3 cameraRayDirection(vec2 filmPoint)
 {
     vec2 uv = (2.0 * filmPoint - uImageSize) / uImageSize.y * uTanHalfFovy;

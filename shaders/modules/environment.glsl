@@ -5,6 +5,17 @@
 uniform int uEnvironmentKind;
 uniform vec3 uEnvironmentColor;
 
+// Read once per pixel, before any branch (see scene_data.glsl): the code below sees copies.
+int uEnvironmentKindReadOnce;
+vec3 uEnvironmentColorReadOnce;
+void readEnvironmentUniformsOnce()
+{
+    uEnvironmentKindReadOnce = uEnvironmentKind;
+    uEnvironmentColorReadOnce = uEnvironmentColor;
+}
+#define uEnvironmentKind uEnvironmentKindReadOnce
+#define uEnvironmentColor uEnvironmentColorReadOnce
+
 vec3 environmentRadiance(vec3 direction)
 {
 #if ENVIRONMENT_KIND == ENVIRONMENT_KIND_FROM_UNIFORM

@@ -2,6 +2,14 @@
 
 uniform int uExactFresnel;  // 0: Schlick's approximation (the seed's), 1: exact dielectric
 
+// Read once per pixel, before any branch (see scene_data.glsl): the code below sees copies.
+int uExactFresnelReadOnce;
+void readFresnelUniformsOnce()
+{
+    uExactFresnelReadOnce = uExactFresnel;
+}
+#define uExactFresnel uExactFresnelReadOnce
+
 // Schlick, "An inexpensive BRDF model for physically-based rendering", 1994. The base is
 // clamped to [0, 1]: a cosine that rounds above 1 must not give pow() a negative base
 // (llvmpipe returns NaN for that), and the fifth power is written out for the same reason.

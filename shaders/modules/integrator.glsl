@@ -6,6 +6,17 @@
 uniform int uMaxBounces;          // scattering events after the camera ray (the seed: 16)
 uniform int uRussianRouletteDepth;  // scattering events that roulette never ends (the seed: 4)
 
+// Read once per pixel, before any branch (see scene_data.glsl): the code below sees copies.
+int uMaxBouncesReadOnce;
+int uRussianRouletteDepthReadOnce;
+void readIntegratorUniformsOnce()
+{
+    uMaxBouncesReadOnce = uMaxBounces;
+    uRussianRouletteDepthReadOnce = uRussianRouletteDepth;
+}
+#define uMaxBounces uMaxBouncesReadOnce
+#define uRussianRouletteDepth uRussianRouletteDepthReadOnce
+
 // Smallest cosine between wo and the facing normal (see Surface.facingNormal).
 const float kMinimumViewCosine = 1e-4;
 

@@ -5,6 +5,14 @@
 
 uniform int uUseMis;  // 1: combine light and BSDF sampling of sphere lights by MIS
 
+// Read once per pixel, before any branch (see scene_data.glsl): the code below sees copies.
+int uUseMisReadOnce;
+void readLightsUniformsOnce()
+{
+    uUseMisReadOnce = uUseMis;
+}
+#define uUseMis uUseMisReadOnce
+
 int selectLight(float u)
 {
     for (int light = 0; light < LIGHT_COUNT - 1 && loopIterationAllowed(); ++light)

@@ -29,8 +29,17 @@ bool isValidSample(vec3 value)
 
 void main()
 {
-    // Before any branch (scene_data.glsl).
-    readShapeParametersOnce();
+    // Before any branch: the uniforms are read once (scene_data.glsl).
+    readSceneDataUniformsOnce();
+    readCameraUniformsOnce();
+    readEnvironmentUniformsOnce();
+    readFresnelUniformsOnce();
+    readIntegratorUniformsOnce();
+    readLightsUniformsOnce();
+    readPigmentsUniformsOnce();
+    readRayCullingUniformsOnce();
+    readSamplerUniformsOnce();
+    readSphereTracingUniformsOnce();
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 estimate = texelFetch(uPreviousEstimate, pixel, 0);
     vec4 moments = texelFetch(uPreviousMoments, pixel, 0);

@@ -3,6 +3,16 @@
 #if HAS_TEXTURE_PIGMENT
 uniform sampler2DArray uPigmentTextures;  // every image, resized to one size, sRGB-decoded
 uniform float uPigmentTextureSize;         // texels along the larger side of a layer
+
+// Read once per pixel, before any branch (see scene_data.glsl): the code below sees copies.
+float uPigmentTextureSizeReadOnce;
+void readPigmentsUniformsOnce()
+{
+    uPigmentTextureSizeReadOnce = uPigmentTextureSize;
+}
+#define uPigmentTextureSize uPigmentTextureSizeReadOnce
+#else
+void readPigmentsUniformsOnce() {}
 #endif
 
 // 3D checkerboard of cubes of edge `size`: the first colour where

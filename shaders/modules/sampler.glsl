@@ -22,6 +22,17 @@
 uniform int uSampler;  // SAMPLER_INDEPENDENT or SAMPLER_SOBOL
 uniform uvec2 uSeed;   // the render's 64-bit seed, low word first
 
+// Read once per pixel, before any branch (see scene_data.glsl): the code below sees copies.
+int uSamplerReadOnce;
+uvec2 uSeedReadOnce;
+void readSamplerUniformsOnce()
+{
+    uSamplerReadOnce = uSampler;
+    uSeedReadOnce = uSeed;
+}
+#define uSampler uSamplerReadOnce
+#define uSeed uSeedReadOnce
+
 const int SAMPLER_INDEPENDENT = 0;
 const int SAMPLER_SOBOL = 1;
 

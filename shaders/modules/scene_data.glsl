@@ -7,22 +7,28 @@
 // Shape parameters: one or more vec4 per primitive or transform.
 uniform vec4 uShapeParameters[SHAPE_PARAMETER_ARRAY_SIZE];
 
-#if SHAPE_PARAMETERS_READ_ONCE
+// --- uniforms read once -------------------------------------------------------------------
 // llvmpipe reads a uniform with one load for all pixels of a SIMD group only where every
-// pixel of the group is known to run (no branch or loop that some pixel may have left);
-// elsewhere it gathers it pixel by pixel, with a bounds check, as if the index varied. The
-// generated shape code runs inside the path loop and the marches, so every parameter of every
-// step was gathered. The specialised shader reads them at constant indices: they are copied
-// once per pixel into variables at the start of main(), and the shape code reads those (the
-// name below). Scene 6: 1.16x (docs/PERFORMANCE.md). The copy is element by element: a whole-
-// array assignment is propagated back to the uniform by the compiler.
-vec4 shapeParametersReadOnce[SHAPE_PARAMETER_ARRAY_SIZE];
+// pixel of the group is known to run (outside every branch and loop that some pixel may have
+// left); elsewhere it gathers it pixel by pixel, with a bounds check, as if its index varied.
+// Nearly all of a path's work runs inside such loops, so every uniform it read there was
+// gathered at every use. So main() first copies the uniforms into variables, and the code
+// reads those: each module declares its copies and the function that fills them right after
+// its uniforms, then renames the uniforms to their copies with #define, so that the code
+// below keeps the uniforms' names. (Scene 6: 1.16x for the shape parameters alone;
+// docs/PERFORMANCE.md.) Copies of arrays are made element by element: a whole-array
+// assignment is propagated back to the uniform by the compiler. Arrays read at indices that
+// vary are left alone; their copies would be gathered too.
+
+#if SHAPE_PARAMETERS_READ_ONCE
+// The specialised shader's generated shape code reads the parameters at constant indices.
+vec4 uShapeParametersReadOnce[SHAPE_PARAMETER_ARRAY_SIZE];
 void readShapeParametersOnce()
 {
     for (int i = 0; i < SHAPE_PARAMETER_ARRAY_SIZE; ++i)
-        shapeParametersReadOnce[i] = uShapeParameters[i];
+        uShapeParametersReadOnce[i] = uShapeParameters[i];
 }
-#define uShapeParameters shapeParametersReadOnce
+#define uShapeParameters uShapeParametersReadOnce
 #else
 void readShapeParametersOnce() {}
 #endif
@@ -49,26 +55,65 @@ uniform uint uSphereLightPieces;
 // (render/ShaderCodes.h), from the kinds' descriptions in scene/Pigments.h and
 // scene/Materials.h.
 
+// A table of one record (one light, as in every classic scene) is read once, like the other
+// uniforms, and its accessors read that copy whatever index they are given (an index out of
+// range was clamped to the one record before): scene 1 gained 1.11x from its light's record
+// read at a constant index alone (docs/PERFORMANCE.md). Larger tables are indexed by values
+// that vary from pixel to pixel (the object a ray hit), and are gathered.
+#if OBJECT_ARRAY_SIZE == 1
+ivec4 uObjectsReadOnce[1];
+#define OBJECT_RECORD(object) uObjectsReadOnce[0]
+#else
+#define OBJECT_RECORD(object) uObjects[object]
+#endif
+#if PIGMENT_ARRAY_SIZE == 1
+vec4 uPigmentsReadOnce[3];
+#define PIGMENT_RECORD(pigment, part) uPigmentsReadOnce[part]
+#else
+#define PIGMENT_RECORD(pigment, part) uPigments[3 * (pigment) + (part)]
+#endif
+#if FINISH_ARRAY_SIZE == 1
+vec4 uFinishesReadOnce[2];
+#define FINISH_RECORD(finish, part) uFinishesReadOnce[part]
+#else
+#define FINISH_RECORD(finish, part) uFinishes[2 * (finish) + (part)]
+#endif
+#if LIGHT_ARRAY_SIZE == 1
+vec4 uLightsReadOnce[3];
+#define LIGHT_RECORD(light, part) uLightsReadOnce[part]
+#else
+#define LIGHT_RECORD(light, part) uLights[3 * (light) + (part)]
+#endif
+uint uSphereLightPiecesReadOnce;
+void readSceneDataUniformsOnce()
+{
+    readShapeParametersOnce();
+#if OBJECT_ARRAY_SIZE == 1
+    uObjectsReadOnce[0] = uObjects[0];
+#endif
+#if PIGMENT_ARRAY_SIZE == 1
+    for (int part = 0; part < 3; ++part)
+        uPigmentsReadOnce[part] = uPigments[part];
+#endif
+#if FINISH_ARRAY_SIZE == 1
+    for (int part = 0; part < 2; ++part)
+        uFinishesReadOnce[part] = uFinishes[part];
+#endif
+#if LIGHT_ARRAY_SIZE == 1
+    for (int part = 0; part < 3; ++part)
+        uLightsReadOnce[part] = uLights[part];
+#endif
+    uSphereLightPiecesReadOnce = uSphereLightPieces;
+}
+#define uSphereLightPieces uSphereLightPiecesReadOnce
+
 // --- accessors: where object, pigment, finish and light records are decoded --------------
-// A table of one record (one light, as in every classic scene) is read at a constant index:
-// llvmpipe then loads it once for all pixels of its SIMD group, where an index that varies
-// per pixel is gathered pixel by pixel, with a bounds check, for every field read (scene 1
-// gained 1.11x from its light alone, docs/PERFORMANCE.md). The index is then ignored, as an
-// index out of range was clamped before.
-#define TABLE_RECORD(t, size, stride, i, part) t[(size) == 1 ? (part) : (stride) * (i) + (part)]
 
-int objectPigment(int object) { return TABLE_RECORD(uObjects, OBJECT_ARRAY_SIZE, 1, object, 0).x; }
-int objectFinish(int object) { return TABLE_RECORD(uObjects, OBJECT_ARRAY_SIZE, 1, object, 0).y; }
-int objectSphereLight(int object)
-{
-    return TABLE_RECORD(uObjects, OBJECT_ARRAY_SIZE, 1, object, 0).z;
-}
-int objectShapeProgramStart(int object)
-{
-    return TABLE_RECORD(uObjects, OBJECT_ARRAY_SIZE, 1, object, 0).w;
-}
+int objectPigment(int object) { return OBJECT_RECORD(object).x; }
+int objectFinish(int object) { return OBJECT_RECORD(object).y; }
+int objectSphereLight(int object) { return OBJECT_RECORD(object).z; }
+int objectShapeProgramStart(int object) { return OBJECT_RECORD(object).w; }
 
-#define PIGMENT_RECORD(pigment, part) TABLE_RECORD(uPigments, PIGMENT_ARRAY_SIZE, 3, pigment, part)
 int pigmentKind(int pigment) { return int(PIGMENT_RECORD(pigment, 0).x); }
 // A checker's cube edge, or a texture's tile size (world units per repeat).
 float pigmentSize(int pigment) { return PIGMENT_RECORD(pigment, 0).y; }
@@ -76,13 +121,11 @@ float pigmentTextureLayer(int pigment) { return PIGMENT_RECORD(pigment, 0).z; }
 vec3 pigmentFirstColor(int pigment) { return PIGMENT_RECORD(pigment, 1).rgb; }
 vec3 pigmentSecondColor(int pigment) { return PIGMENT_RECORD(pigment, 2).rgb; }
 
-#define FINISH_RECORD(finish, part) TABLE_RECORD(uFinishes, FINISH_ARRAY_SIZE, 2, finish, part)
 vec3 finishEmission(int finish) { return FINISH_RECORD(finish, 0).rgb; }
 float finishPhongExponent(int finish) { return FINISH_RECORD(finish, 0).w; }
 int finishMaterial(int finish) { return int(FINISH_RECORD(finish, 1).x); }
 float finishIor(int finish) { return FINISH_RECORD(finish, 1).y; }
 
-#define LIGHT_RECORD(light, part) TABLE_RECORD(uLights, LIGHT_ARRAY_SIZE, 3, light, part)
 vec3 lightPosition(int light) { return LIGHT_RECORD(light, 0).xyz; }
 float lightRadius(int light) { return LIGHT_RECORD(light, 0).w; }
 vec3 lightEmission(int light) { return LIGHT_RECORD(light, 1).rgb; }

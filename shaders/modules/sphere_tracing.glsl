@@ -27,6 +27,29 @@ uniform int uMaxMarchSteps;
 uniform float uOverRelaxation;      // Keinert's omega; 1 is plain sphere tracing
 uniform float uStepScale;           // at most 1: shorter steps for overestimating SDFs
 
+// Read once per pixel, before any branch (see scene_data.glsl): the code below sees copies.
+float uHitToleranceReadOnce;
+float uMinimumHitDistanceReadOnce;
+float uFarDistanceReadOnce;
+int uMaxMarchStepsReadOnce;
+float uOverRelaxationReadOnce;
+float uStepScaleReadOnce;
+void readSphereTracingUniformsOnce()
+{
+    uHitToleranceReadOnce = uHitTolerance;
+    uMinimumHitDistanceReadOnce = uMinimumHitDistance;
+    uFarDistanceReadOnce = uFarDistance;
+    uMaxMarchStepsReadOnce = uMaxMarchSteps;
+    uOverRelaxationReadOnce = uOverRelaxation;
+    uStepScaleReadOnce = uStepScale;
+}
+#define uHitTolerance uHitToleranceReadOnce
+#define uMinimumHitDistance uMinimumHitDistanceReadOnce
+#define uFarDistance uFarDistanceReadOnce
+#define uMaxMarchSteps uMaxMarchStepsReadOnce
+#define uOverRelaxation uOverRelaxationReadOnce
+#define uStepScale uStepScaleReadOnce
+
 // A ray's footprint: `width` at its origin, growing by `spread` per unit of distance.
 struct RayCone {
     float width;

@@ -69,6 +69,10 @@ float routinePdf(vec3 direction)
 
 void main()
 {
+    // The modules read their uniforms through copies, which main() fills (scene_data.glsl).
+    readSceneDataUniformsOnce();
+    readSamplerUniformsOnce();
+    readFresnelUniformsOnce();
     ivec2 fragment = ivec2(gl_FragCoord.xy);
     if (uMode == 1 || uMode == 3) {
         float theta = gl_FragCoord.x / uGridCells.x * uGridThetaMax;
