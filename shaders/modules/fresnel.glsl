@@ -1,15 +1,5 @@
 // Fresnel reflectance.
 
-uniform int uExactFresnel;  // 0: Schlick's approximation (the seed's), 1: exact dielectric
-
-// Read once per pixel, before any branch (see scene_data.glsl): the code below sees copies.
-int uExactFresnelReadOnce;
-void readFresnelUniformsOnce()
-{
-    uExactFresnelReadOnce = uExactFresnel;
-}
-#define uExactFresnel uExactFresnelReadOnce
-
 // Schlick, "An inexpensive BRDF model for physically-based rendering", 1994. The base is
 // clamped to [0, 1]: a cosine that rounds above 1 must not give pow() a negative base
 // (llvmpipe returns NaN for that), and the fifth power is written out for the same reason.
@@ -43,7 +33,7 @@ float dielectricReflectance(float cosIncident, float etaIncident, float etaTrans
     // Equal indices: there is no interface, whatever Schlick's formula would say at grazing.
     if (etaIncident == etaTransmitted)
         return 0.0;
-    if (uExactFresnel != 0) {
+    if (gDielectricFresnel == FRESNEL_EXACT) {
         float perpendicular = (etaIncident * cosIncident - etaTransmitted * cosTransmitted) /
                               (etaIncident * cosIncident + etaTransmitted * cosTransmitted);
         float parallel = (etaTransmitted * cosIncident - etaIncident * cosTransmitted) /

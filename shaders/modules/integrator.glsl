@@ -3,20 +3,6 @@
 // importance sampling (Veach 1997, power heuristic) between light and BSDF sampling of
 // sphere lights, so that no light is counted twice.
 
-uniform int uMaxBounces;          // scattering events after the camera ray (the seed: 16)
-uniform int uRussianRouletteDepth;  // scattering events that roulette never ends (the seed: 4)
-
-// Read once per pixel, before any branch (see scene_data.glsl): the code below sees copies.
-int uMaxBouncesReadOnce;
-int uRussianRouletteDepthReadOnce;
-void readIntegratorUniformsOnce()
-{
-    uMaxBouncesReadOnce = uMaxBounces;
-    uRussianRouletteDepthReadOnce = uRussianRouletteDepth;
-}
-#define uMaxBounces uMaxBouncesReadOnce
-#define uRussianRouletteDepth uRussianRouletteDepthReadOnce
-
 // Smallest cosine between wo and the facing normal (see Surface.facingNormal).
 const float kMinimumViewCosine = 1e-4;
 
@@ -67,14 +53,14 @@ struct PathState {
 // The most segments (traced rays) one path can take.
 int maxSegmentsPerPath()
 {
-    return uMaxBounces + 1 + kMaxNullCrossings;
+    return gMaxBounces + 1 + kMaxNullCrossings;
 }
 
 // `cameraClear`: where the camera ray's march may begin (cameraMarchStart, 0 from inside).
 PathState startPath(vec2 filmPoint, int cameraContaining, float cameraClear)
 {
     PathState path;
-    path.origin = uCameraEye;
+    path.origin = gCameraEye;
     path.direction = cameraRayDirection(filmPoint);
     path.cone = RayCone(0.0, cameraPixelSpread());
     path.containing = cameraContaining;
@@ -131,7 +117,7 @@ bool continuePath(inout PathState path)
         rayMeetsSphereLight(path.origin, path.direction, s.lightIndex)) {
         float weight = 1.0;
         if (!path.previousWasDelta)
-            weight = uUseMis != 0
+            weight = gMultipleImportanceSampling
                          ? powerHeuristic(path.previousPdf,
                                           sphereLightPdf(s.lightIndex, path.previousPosition))
                          : 0.0;
@@ -148,7 +134,7 @@ bool continuePath(inout PathState path)
                      path.origin, path.marchStart, path.containing);
     }
 #endif
-    if (path.scattering == uMaxBounces)
+    if (path.scattering == gMaxBounces)
         return false;
     int bounce = path.scattering++;
 
@@ -172,7 +158,7 @@ bool continuePath(inout PathState path)
     // Past the first scattering events, end dim paths at random and reweight the survivors:
     // unbiased, and no throughput clamp undoes it. Dimness is judged without the
     // refractions' radiance scaling, which leaving the medium undoes.
-    if (path.scattering > uRussianRouletteDepth) {
+    if (path.scattering > gRussianRouletteDepth) {
         float survival = min(1.0, maxComponent(path.throughput) / path.radianceScale);
         if (!(bounceSample1D(bounce, SAMPLE_ROULETTE) < survival))
             return false;

@@ -3,16 +3,6 @@
 // power (the host computes the table once, not every pixel). Whether the light is seen is
 // the geometry's business (shadowTransmittance, ray_queries.glsl).
 
-uniform int uUseMis;  // 1: combine light and BSDF sampling of sphere lights by MIS
-
-// Read once per pixel, before any branch (see scene_data.glsl): the code below sees copies.
-int uUseMisReadOnce;
-void readLightsUniformsOnce()
-{
-    uUseMisReadOnce = uUseMis;
-}
-#define uUseMis uUseMisReadOnce
-
 int selectLight(float u)
 {
     for (int light = 0; light < LIGHT_COUNT - 1 && loopIterationAllowed(); ++light)
@@ -127,7 +117,7 @@ vec3 directLighting(Surface s, vec3 wo, float tolerance, float insideSign, float
     vec3 transmittance = shadowTransmittance(s, wi, distance, insideSign, tolerance, target);
     if (maxComponent(transmittance) <= 0.0)
         return vec3(0.0);
-    float weight = lightPdf > 0.0 && uUseMis != 0 ? powerHeuristic(lightPdf, bsdfPdf(s, wo, wi))
+    float weight = lightPdf > 0.0 && gMultipleImportanceSampling ? powerHeuristic(lightPdf, bsdfPdf(s, wo, wi))
                                                   : 1.0;
     return f * cosI * transmittance * arriving * weight;
 #endif

@@ -29,17 +29,8 @@ bool isValidSample(vec3 value)
 
 void main()
 {
-    // Before any branch: the uniforms are read once (scene_data.glsl).
-    readSceneDataUniformsOnce();
-    readCameraUniformsOnce();
-    readEnvironmentUniformsOnce();
-    readFresnelUniformsOnce();
-    readIntegratorUniformsOnce();
-    readLightsUniformsOnce();
-    readPigmentsUniformsOnce();
-    readRayCullingUniformsOnce();
-    readSamplerUniformsOnce();
-    readSphereTracingUniformsOnce();
+    // Before any branch: the uniforms are read once (shadergen/UniformBlock.h says why).
+    readUniformsOnce();
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec4 estimate = texelFetch(uPreviousEstimate, pixel, 0);
     vec4 moments = texelFetch(uPreviousMoments, pixel, 0);

@@ -2,17 +2,6 @@
 
 #if HAS_TEXTURE_PIGMENT
 uniform sampler2DArray uPigmentTextures;  // every image, resized to one size, sRGB-decoded
-uniform float uPigmentTextureSize;         // texels along the larger side of a layer
-
-// Read once per pixel, before any branch (see scene_data.glsl): the code below sees copies.
-float uPigmentTextureSizeReadOnce;
-void readPigmentsUniformsOnce()
-{
-    uPigmentTextureSizeReadOnce = uPigmentTextureSize;
-}
-#define uPigmentTextureSize uPigmentTextureSizeReadOnce
-#else
-void readPigmentsUniformsOnce() {}
 #endif
 
 // 3D checkerboard of cubes of edge `size`: the first colour where
@@ -47,7 +36,7 @@ vec3 triplanarPigment(vec3 p, vec3 normal, float layer, float tileSize, float fo
     vec3 weights = abs(normal);
     weights /= max(weights.x + weights.y + weights.z, 1e-6);
     vec3 q = p / tileSize;
-    float lod = log2(max(footprint / tileSize * uPigmentTextureSize, 1e-6));
+    float lod = log2(max(footprint / tileSize * gPigmentTextureSize, 1e-6));
     // Beyond the weights' sum, which rounding can leave short of 1, the last projection
     // with a weight.
     int axis = weights.z > 0.0 ? 2 : (weights.y > 0.0 ? 1 : 0);

@@ -12,16 +12,6 @@
 // A ray's tolerance at distance t is at most tolerance0 + toleranceGrowth * t (RayCone);
 // a piece counts as approached where its bound comes within that of the ray.
 
-uniform int uRayCulling;  // 0: every ray evaluates every object (--no-culling)
-
-// Read once per pixel, before any branch (see scene_data.glsl): the code below sees copies.
-int uRayCullingReadOnce;
-void readRayCullingUniformsOnce()
-{
-    uRayCullingReadOnce = uRayCulling;
-}
-#define uRayCulling uRayCullingReadOnce
-
 struct RayCulling {
     uint mask;             // bit k set: piece k may be approached
     float escapeDistance;  // past this distance along the ray no piece may be approached

@@ -50,6 +50,6 @@ SurfaceHit noSurfaceHit()
 int cameraContainingObject()
 {
     int containing;
-    return sceneDistanceAndObject(uCameraEye, containing) < 0.0 ? containing : -1;
+    return sceneDistanceAndObject(gCameraEye, containing) < 0.0 ? containing : -1;
 }
 

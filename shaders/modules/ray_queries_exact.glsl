@@ -7,10 +7,10 @@
 // transport, the sampler and the seed are the same, only this module differs.
 
 // Crossings this close to a ray's origin are the surface it leaves: rounding, at 1e-5 of the
-// scene's size (uMinimumHitDistance), keeps every intersection's error far below it.
+// scene's size (gMinimumHitDistance), keeps every intersection's error far below it.
 float exactRayStart()
 {
-    return 4.0 * uMinimumHitDistance;
+    return 4.0 * gMinimumHitDistance;
 }
 
 // The first crossing of the scene's surface, the boundary of the union of its solids, in

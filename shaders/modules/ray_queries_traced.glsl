@@ -44,15 +44,95 @@ int nearestExcludedSphereLight(vec3 origin, vec3 direction, float start, out flo
 }
 #endif
 
+#if HAS_MARCHED_OBJECTS
+// Marches from `start` to `end` to the first stop within the tolerance where the ray truly
+// meets a surface: the stop is moved along the ray onto it (intersectAlongRay), and past a
+// near miss the march goes on with a smaller tolerance, up to kNearMissRetries times. `p`
+// receives the last stop, on the surface where `onSurface`.
+MarchHit marchToSurface(vec3 origin, vec3 direction, float insideSign, RayCone cone,
+                        RayCulling culling, float start, float end, out vec3 p,
+                        out bool onSurface)
+{
+    int stepsLeft = start < end ? gMaxMarchSteps : 0;
+    float toleranceScale = 1.0;
+    float from = start;
+    MarchHit hit = marchMiss(0.0);
+    onSurface = false;
+    for (int attempt = 0; attempt <= kNearMissRetries; ++attempt) {
+        hit = sphereTrace(origin, direction, insideSign, cone, toleranceScale, culling, from,
+                          end, stepsLeft);
+        if (!hit.found)
+            break;
+        p = origin + hit.t * direction;
+        onSurface = intersectAlongRay(p, direction, hit.sceneDistance, insideSign, hit.approach,
+                                      hit.tolerance, culling.mask);
+        if (onSurface || hit.budgetSpent)
+            break;
+        from = hit.t;
+        toleranceScale *= kNearMissToleranceScale;
+    }
+    return hit;
+}
+
+// The surface a march found (hit.found), at its stop `p`: the object whose surface the
+// point is on, and the normal there. Where the stop is not on the surface even after the
+// near-miss retries, it is projected along the normal, which lands on the surface within the
+// tolerance, safely.
+SurfaceHit marchedSurface(MarchHit hit, vec3 p, bool onSurface, vec3 origin, vec3 direction,
+                          float insideSign, RayCone cone, int containing)
+{
+    SurfaceHit surface;
+    surface.found = true;
+    surface.t = hit.t;
+    surface.footprint = coneFootprint(cone, hit.t);
+    surface.tolerance = hitTolerance(cone, hit.t);
+    int object = hit.object;
+    if (onSurface) {
+        // Where two objects come within the tolerance of each other (a contact), the
+        // march's nearest object at the stop may be the other one. (Only marched objects:
+        // the march met none of those met exactly.)
+        sceneDistanceAndObjectCulled(p, 0xffffffffu, object);
+        COUNT_WORK(workEvaluations, 1);
+    }
+    // On the surface, with the on-surface step; off it, or on a surface of zero thickness,
+    // at the march's stop, which lies on the side the ray came from.
+    vec3 normal = sceneNormal(p, kOnSurfaceNormalStep * surface.tolerance, onSurface,
+                              origin + hit.t * direction, surface.tolerance, insideSign);
+    if (normal == vec3(0.0))
+        normal = -direction;
+    if (!onSurface)
+        p -= normal * hit.sceneDistance;
+    surface.object = containing >= 0 ? containing : object;
+    surface.position = p;
+    surface.normal = normal;
+    return surface;
+}
+#endif
+
+// The surface of an exact crossing, or none.
+SurfaceHit exactSurface(ExactHit exact, vec3 origin, vec3 direction, RayCone cone)
+{
+    if (exact.object < 0)
+        return noSurfaceHit();
+    SurfaceHit surface;
+    surface.found = true;
+    surface.object = exact.object;
+    surface.t = exact.t;
+    surface.position = origin + exact.t * direction;
+    surface.normal = exact.normal;
+    surface.footprint = coneFootprint(cone, exact.t);
+    surface.tolerance = hitTolerance(cone, exact.t);
+    return surface;
+}
+
 // The first surface along the ray. What the pixel sees is where its ray meets the surface:
 // stops are moved along the ray onto it (see intersectAlongRay; without it a lit plane comes
 // out about 1 % too bright, a floor seen at grazing angles shows its pattern displaced
 // towards the camera, and a convex mirror, whose reflected directions follow the point,
 // reflects the wrong part of the room near its rim), and the object is the one whose
-// surface the point is on. Where that does not converge even after the near-miss retries,
-// the point is projected along the normal, which lands on the surface within the tolerance,
-// safely. The normal is taken at the final point: decisions such as which side the ray came
-// from are ill-conditioned at grazing incidence and must match it.
+// surface the point is on (marchToSurface, marchedSurface). The normal is taken at the final
+// point: decisions such as which side the ray came from are ill-conditioned at grazing
+// incidence and must match it.
 SurfaceHit findSurface(vec3 origin, vec3 direction, float insideSign, RayCone cone,
                        float start, int containing)
 {
@@ -68,7 +148,7 @@ SurfaceHit findSurface(vec3 origin, vec3 direction, float insideSign, RayCone co
     exactSurfacesIntersect(origin, direction, 0.0, containing, exact);
 #if HAS_MARCHED_OBJECTS
     RayCulling culling = rayCulling(origin, direction, cone);
-    float end = min(uFarDistance, exact.t);
+    float end = min(gFarDistance, exact.t);
     if (containing >= 0 && exact.object == containing)
         end = min(end, start);
 #endif
@@ -78,12 +158,11 @@ SurfaceHit findSurface(vec3 origin, vec3 direction, float insideSign, RayCone co
     if (insideSign > 0.0) {
         light = nearestExcludedSphereLight(origin, direction, start, lightT);
 #if HAS_MARCHED_OBJECTS
-        culling.mask &= ~uSphereLightPieces;
+        culling.mask &= ~gSphereLightPieces;
         end = min(end, lightT);
 #endif
     }
 #endif
-    SurfaceHit surface;
 #if HAS_MARCHED_OBJECTS
     // A ray that came near nothing but lights has nothing to march (its culling distance
     // still reaches past the lights): with no piece left the distance is FLOAT_MAX, and a
@@ -91,51 +170,13 @@ SurfaceHit findSurface(vec3 origin, vec3 direction, float insideSign, RayCone co
     // budget on NaN.
     if (culling.mask == 0u)
         end = min(end, start);
-    int stepsLeft = start < end ? uMaxMarchSteps : 0;
-    float toleranceScale = 1.0;
-    float from = start;
-    MarchHit hit = MarchHit(false, 0.0, 0.0, -1, 0.0, 0.0, false);
     vec3 p;
-    bool onSurface = false;
-    for (int attempt = 0; attempt <= kNearMissRetries; ++attempt) {
-        hit = sphereTrace(origin, direction, insideSign, cone, toleranceScale, culling, from,
-                          end, stepsLeft);
-        if (!hit.found)
-            break;
-        p = origin + hit.t * direction;
-        onSurface = intersectAlongRay(p, direction, hit.sceneDistance, insideSign, hit.approach,
-                                      hit.tolerance, culling.mask);
-        if (onSurface || hit.budgetSpent)
-            break;
-        from = hit.t;
-        toleranceScale *= kNearMissToleranceScale;
-    }
-    if (hit.found) {
-        surface.found = true;
-        surface.t = hit.t;
-        surface.footprint = coneFootprint(cone, hit.t);
-        surface.tolerance = hitTolerance(cone, hit.t);
-        int object = hit.object;
-        if (onSurface) {
-            // Where two objects come within the tolerance of each other (a contact), the
-            // march's nearest object at the stop may be the other one. (Only marched objects:
-            // the march met none of those met exactly.)
-            sceneDistanceAndObjectCulled(p, 0xffffffffu, object);
-            COUNT_WORK(workEvaluations, 1);
-        }
-        // On the surface, with the on-surface step; off it, or on a surface of zero
-        // thickness, at the march's stop, which lies on the side the ray came from.
-        vec3 normal = sceneNormal(p, kOnSurfaceNormalStep * surface.tolerance, onSurface,
-                                  origin + hit.t * direction, surface.tolerance, insideSign);
-        if (normal == vec3(0.0))
-            normal = -direction;
-        if (!onSurface)
-            p -= normal * hit.sceneDistance;
-        surface.object = containing >= 0 ? containing : object;
-        surface.position = p;
-        surface.normal = normal;
-        return surface;
-    }
+    bool onSurface;
+    MarchHit hit =
+        marchToSurface(origin, direction, insideSign, cone, culling, start, end, p, onSurface);
+    if (hit.found)
+        return marchedSurface(hit, p, onSurface, origin, direction, insideSign, cone,
+                              containing);
 #endif
     // Nothing marched before the nearest exact crossing, if any.
 #if HAS_SPHERE_LIGHTS
@@ -143,16 +184,7 @@ SurfaceHit findSurface(vec3 origin, vec3 direction, float insideSign, RayCone co
         exact = ExactHit(lightT, lightObject(light),
                          normalize(origin + lightT * direction - lightPosition(light)));
 #endif
-    if (exact.object < 0)
-        return noSurfaceHit();
-    surface.found = true;
-    surface.object = exact.object;
-    surface.t = exact.t;
-    surface.position = origin + exact.t * direction;
-    surface.normal = exact.normal;
-    surface.footprint = coneFootprint(cone, exact.t);
-    surface.tolerance = hitTolerance(cone, exact.t);
-    return surface;
+    return exactSurface(exact, origin, direction, cone);
 }
 
 // Starts the next ray at surface point p, off the surface by twice the hit tolerance (so
@@ -203,44 +235,12 @@ bool spawn(vec3 p, vec3 facingNormal, vec3 direction, float tolerance, int objec
     return false;
 }
 
-// Marches from off the surface, on the side the path arrived from, to the far end. Sphere
-// lights that rays leave out of their marches block the segment where it crosses them
-// exactly; when the segment ends on a light that is still marched, arriving within the
-// tolerance of it counts as reaching it. (Marching on to the target's surface itself would
-// crawl for ever on rays that meet it at grazing angles, and be taken for occlusion.) A stop
-// near another surface blocks the light only if the ray truly meets it, as findSurface
-// decides for its hits: a shadow ray grazing a silhouette or slipping past the rim of a
-// contact within the tolerance goes on, with a smaller one. A spent step budget counts as
-// blocked, as a spent budget counts as a hit for camera and path rays.
-//
-// The march runs in two nested loops: the inner one (shadowMarch, sphere_tracing.glsl) only
-// steps, one distance each, until the ray escapes or stops near a surface; the outer one
-// judges the stop (the light reached, an index-1 surface passed, a near miss marched on, or
-// a blocker) and goes round again only while some ray of the SIMD group marches on.
-// llvmpipe executes a branch for the whole group whenever one lane takes it, so a judgement
-// inside the step loop would be paid at nearly every step.
-const int kMaxShadowStops = kNearMissRetries + kMaxShadowCrossings + 1;
-
-vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, float tolerance,
-                         int target)
+// Shapes met exactly, which marches leave out, block the segment where it crosses one;
+// index-1 ones only tint `transmittance`, and are passed one crossing after another. True
+// when one blocks.
+bool exactShapesBlock(vec3 origin, vec3 wi, float maxDistance, float tolerance, int target,
+                      inout vec3 transmittance)
 {
-    // Off the surface along wi, as spawn offsets rays: the segment's line still passes
-    // through the shading point, so what it sees of the light is what the point sees (an
-    // offset along the normal raises the point, and shadows near contacts and edges shift
-    // by it). Only at grazing directions is part of the offset along the normal.
-    COUNT_WORK(workShadowRays, 1);
-    float clearance = 2.0 * tolerance;
-    float cosLeaving = dot(wi, s.facingNormal);
-    float along = clearance / max(cosLeaving, kMinimumSpawnCosine);
-    float normalPart = max(0.0, clearance - along * cosLeaving);
-    if (target < 0 && distance <= along)
-        return vec3(0.0);
-    vec3 origin = s.position + wi * along + s.facingNormal * normalPart;
-    float maxDistance = distance - along;
-    vec3 transmittance = vec3(1.0);
-    RayCulling culling = sceneRayCulling(origin, wi, tolerance, 0.0);
-    // Shapes met exactly, which marches leave out, block where the segment crosses one;
-    // index-1 ones only tint, and are passed one crossing after another.
     float from = 0.0;
     for (int crossing = 0; crossing < kMaxShadowCrossings && loopIterationAllowed();
          ++crossing) {
@@ -249,37 +249,52 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
         if (wall.object < 0 || wall.object == target)
             break;
         if (!isNullInterface(wall.object))
-            return vec3(0.0);
+            return true;
 #if HAS_NULL_INTERFACES
         transmittance *= pigmentColor(objectPigment(wall.object), origin + wall.t * wi, -wi,
                                       0.0, 0.0, random01());
         from = wall.t + tolerance;
 #endif
     }
+    return false;
+}
+
 #if HAS_SPHERE_LIGHTS
-    if (insideSign > 0.0) {
-        culling.mask &= ~uSphereLightPieces;
-        for (int light = 0; light < LIGHT_COUNT && loopIterationAllowed(); ++light)
-            if (!isPointLight(light) && lightCullingBit(light) != 0u &&
-                lightObject(light) != target &&
-                raySphereCrossing(origin, wi, lightPosition(light), lightRadius(light), 0.0) <
-                    maxDistance)
-                return vec3(0.0);
-    }
+// Sphere lights that rays leave out of their marches block the segment where it crosses
+// them exactly (but the target).
+bool excludedSphereLightsBlock(vec3 origin, vec3 wi, float maxDistance, int target)
+{
+    for (int light = 0; light < LIGHT_COUNT && loopIterationAllowed(); ++light)
+        if (!isPointLight(light) && lightCullingBit(light) != 0u && lightObject(light) != target &&
+            raySphereCrossing(origin, wi, lightPosition(light), lightRadius(light), 0.0) <
+                maxDistance)
+            return true;
+    return false;
+}
 #endif
-#if !HAS_MARCHED_OBJECTS
-    return transmittance;
-#else
-    float clearDistance = min(maxDistance, culling.escapeDistance);
+
+const int kMaxShadowStops = kNearMissRetries + kMaxShadowCrossings + 1;
+
+#if HAS_MARCHED_OBJECTS
+// The segment marched to its clear end (see shadowTransmittance). The march runs in two
+// nested loops: the inner one (shadowMarch, sphere_tracing.glsl) only steps, one distance
+// each, until the ray escapes or stops near a surface; this one judges the stop (the light
+// reached, an index-1 surface passed, a near miss marched on, or a blocker) and goes round
+// again only while some ray of the SIMD group marches on. llvmpipe executes a branch for
+// the whole group whenever one lane takes it, so a judgement inside the step loop would be
+// paid at nearly every step.
+vec3 marchedTransmittance(vec3 origin, vec3 wi, float insideSign, uint mask,
+                          float clearDistance, float tolerance, int target, vec3 transmittance)
+{
     float stopTolerance = tolerance;
     int retries = 0;
-    int stepsLeft = uMaxMarchSteps;
+    int stepsLeft = gMaxMarchSteps;
     float t = 0.0;
     float acceptedT = 0.0;
     float acceptedRadius = 0.0;
     for (int stop = 0; stop < kMaxShadowStops && loopIterationAllowed(); ++stop) {
-        float radius = shadowMarch(origin, wi, insideSign, culling.mask, clearDistance,
-                                   stopTolerance, t, acceptedT, acceptedRadius, stepsLeft);
+        float radius = shadowMarch(origin, wi, insideSign, mask, clearDistance, stopTolerance,
+                                   t, acceptedT, acceptedRadius, stepsLeft);
         if (t >= clearDistance)
             return transmittance;
         if (!(radius < stopTolerance))
@@ -288,7 +303,7 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
         vec3 p = origin + t * wi;
 #if HAS_NULL_INTERFACES || HAS_SPHERE_LIGHTS
         int nearest;
-        sceneDistanceAndObjectCulled(p, culling.mask, nearest);
+        sceneDistanceAndObjectCulled(p, mask, nearest);
         if (nearest == target)
             return transmittance;
 #endif
@@ -309,16 +324,62 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
         vec3 q = p;
         if (radius <= 0.0 || retries == kNearMissRetries ||
             intersectAlongRay(q, wi, insideSign * radius, insideSign, approach, stopTolerance,
-                              culling.mask))
+                              mask))
             return vec3(0.0);
         // A near miss: march on past it with a smaller tolerance.
         ++retries;
         stopTolerance *= kNearMissToleranceScale;
         acceptedT = t;
         acceptedRadius = radius;
-        t += radius * uStepScale;
+        t += radius * gStepScale;
     }
     return vec3(0.0);
+}
+#endif
+
+// The light's transmittance along a shadow segment from s to `distance` along wi. It leaves
+// from off the surface, on the side the path arrived from, and marches to the far end.
+// Sphere lights that rays leave out of their marches block the segment where it crosses them
+// exactly; when the segment ends on a light that is still marched, arriving within the
+// tolerance of it counts as reaching it. (Marching on to the target's surface itself would
+// crawl for ever on rays that meet it at grazing angles, and be taken for occlusion.) A stop
+// near another surface blocks the light only if the ray truly meets it, as findSurface
+// decides for its hits: a shadow ray grazing a silhouette or slipping past the rim of a
+// contact within the tolerance goes on, with a smaller one. A spent step budget counts as
+// blocked, as a spent budget counts as a hit for camera and path rays.
+vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, float tolerance,
+                         int target)
+{
+    // Off the surface along wi, as spawn offsets rays: the segment's line still passes
+    // through the shading point, so what it sees of the light is what the point sees (an
+    // offset along the normal raises the point, and shadows near contacts and edges shift
+    // by it). Only at grazing directions is part of the offset along the normal.
+    COUNT_WORK(workShadowRays, 1);
+    float clearance = 2.0 * tolerance;
+    float cosLeaving = dot(wi, s.facingNormal);
+    float along = clearance / max(cosLeaving, kMinimumSpawnCosine);
+    float normalPart = max(0.0, clearance - along * cosLeaving);
+    if (target < 0 && distance <= along)
+        return vec3(0.0);
+    vec3 origin = s.position + wi * along + s.facingNormal * normalPart;
+    float maxDistance = distance - along;
+    vec3 transmittance = vec3(1.0);
+    RayCulling culling = sceneRayCulling(origin, wi, tolerance, 0.0);
+    if (exactShapesBlock(origin, wi, maxDistance, tolerance, target, transmittance))
+        return vec3(0.0);
+#if HAS_SPHERE_LIGHTS
+    if (insideSign > 0.0) {
+        culling.mask &= ~gSphereLightPieces;
+        if (excludedSphereLightsBlock(origin, wi, maxDistance, target))
+            return vec3(0.0);
+    }
+#endif
+#if !HAS_MARCHED_OBJECTS
+    return transmittance;
+#else
+    return marchedTransmittance(origin, wi, insideSign, culling.mask,
+                                min(maxDistance, culling.escapeDistance), tolerance, target,
+                                transmittance);
 #endif
 }
 
@@ -334,9 +395,9 @@ float cameraMarchStart(ivec2 pixel)
     vec3 axis = cameraRayDirection(vec2(pixel) + 0.5);
     // Every ray through the pixel lies within half the pixel's diagonal of the axis; a pixel
     // subtends the largest angle at the centre of the image.
-    float growth = (0.7072 + uHitTolerance) * cameraPixelSpread();
-    float tolerance0 = uMinimumHitDistance;
-    RayCulling culling = sceneRayCulling(uCameraEye, axis, tolerance0, growth);
-    float limit = min(uFarDistance, culling.escapeDistance);
-    return coneClearance(uCameraEye, axis, tolerance0, growth, culling.mask, limit);
+    float growth = (0.7072 + gHitTolerance) * cameraPixelSpread();
+    float tolerance0 = gMinimumHitDistance;
+    RayCulling culling = sceneRayCulling(gCameraEye, axis, tolerance0, growth);
+    float limit = min(gFarDistance, culling.escapeDistance);
+    return coneClearance(gCameraEye, axis, tolerance0, growth, culling.mask, limit);
 }

@@ -19,23 +19,6 @@
 // The sample index is the pixel's count of samples so far (accumulated and discarded), so
 // a render continued from its accumulated state continues the same sequence.
 
-uniform int uSampler;  // SAMPLER_INDEPENDENT or SAMPLER_SOBOL
-uniform uvec2 uSeed;   // the render's 64-bit seed, low word first
-
-// Read once per pixel, before any branch (see scene_data.glsl): the code below sees copies.
-int uSamplerReadOnce;
-uvec2 uSeedReadOnce;
-void readSamplerUniformsOnce()
-{
-    uSamplerReadOnce = uSampler;
-    uSeedReadOnce = uSeed;
-}
-#define uSampler uSamplerReadOnce
-#define uSeed uSeedReadOnce
-
-const int SAMPLER_INDEPENDENT = 0;
-const int SAMPLER_SOBOL = 1;
-
 const int SAMPLE_PIXEL = 0;  // 2D: the point in the pixel
 
 // A path's decisions. The point in the pixel is dimension 0; scattering event b (counted
@@ -58,7 +41,7 @@ uint sampleIndex = 0u;
 // What identifies a pixel's sequence for this seed.
 uint pixelKey(ivec2 pixel)
 {
-    uint seedKey = hashCombine(hashWord(uSeed.x), uSeed.y);
+    uint seedKey = hashCombine(hashWord(gSeed.x), gSeed.y);
     return hashCombine(seedKey, uint(pixel.x) | (uint(pixel.y) << 16));
 }
 
@@ -170,12 +153,12 @@ int bounceDimension(int bounce, int decision)
 
 float sample1D(int dimension)
 {
-    return uSampler == SAMPLER_SOBOL && dimension >= 0 ? sobolSample1D(dimension) : random01();
+    return gSampler == SAMPLER_SOBOL && dimension >= 0 ? sobolSample1D(dimension) : random01();
 }
 
 vec2 sample2D(int dimension)
 {
-    return uSampler == SAMPLER_SOBOL && dimension >= 0 ? sobolSample2D(dimension) : random2();
+    return gSampler == SAMPLER_SOBOL && dimension >= 0 ? sobolSample2D(dimension) : random2();
 }
 
 float bounceSample1D(int bounce, int decision)

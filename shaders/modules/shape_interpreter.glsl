@@ -10,9 +10,9 @@
 //   COMBINE    a = CSG operator, b = operand count, c = parameter slot (smooth operators)
 //   END        the object's distance is on the stack
 // The opcodes (OPCODE_*), the primitive and CSG codes (PRIMITIVE_*, CSG_*) and the switches
-// over those kinds, primitiveDistance and combine, are generated
-// (render/SceneShaderGenerator.cpp) from the kinds' descriptions in scene/Primitives.h and
-// scene/CsgOperators.h.
+// over those kinds, primitiveDistance, combine, primitiveMetExactly and
+// exactPrimitiveIntersect, are generated (shadergen/InterpretedSceneCode.cpp) from the kinds'
+// descriptions in scene/Primitives.h and scene/CsgOperators.h.
 
 uniform ivec4 uShapeProgram[SHAPE_PROGRAM_ARRAY_SIZE];
 // Per object, a bounding sphere (centre, radius) for expensive shapes, radius < 0 for none:
@@ -29,9 +29,9 @@ bool mayBeNearer(int object, vec3 p, float known)
 // of points: local arrays indexed at run time are slow on software rasterisers.
 vec3 toParentPoint(vec3 local, int first)
 {
-    vec4 translationAndScale = uShapeParameters[first + 3];
-    mat3 rotation = mat3(uShapeParameters[first].xyz, uShapeParameters[first + 1].xyz,
-                         uShapeParameters[first + 2].xyz);
+    vec4 translationAndScale = SHAPE_PARAMETERS[first + 3];
+    mat3 rotation = mat3(SHAPE_PARAMETERS[first].xyz, SHAPE_PARAMETERS[first + 1].xyz,
+                         SHAPE_PARAMETERS[first + 2].xyz);
     return rotation * (translationAndScale.w * local) + translationAndScale.xyz;
 }
 
@@ -56,7 +56,7 @@ float runShapeProgram(int start, vec3 p)
         } else {
             int operands = instruction.z;
             int first = distanceCount - operands;
-            float parameter = uShapeParameters[instruction.w].x;
+            float parameter = SHAPE_PARAMETERS[instruction.w].x;
             float d = distances[first];
             for (int i = 1; i < operands && loopIterationAllowed(); ++i)
                 d = combine(instruction.y, d, distances[first + i], parameter);
@@ -115,24 +115,17 @@ bool objectInMask(int object, uint mask)
     return object >= 32 || (mask & (1u << uint(object))) != 0u;
 }
 
-// An object that is one untransformed shape with a closed-form intersection (a polyhedron, a
-// sphere that is not a light, a box, a capped cylinder, a disk, a cone, or a torus no thinner
-// than THINNEST_EXACT_TORUS, render/ExactSceneIntersection.h): rays meet it by exact
-// intersection (exactSurfacesIntersect), so the culled forms, which rays march, leave it
-// out. The specialised shader meets transformed ones exactly too.
+// An object that is one untransformed primitive whose kind rays meet by exact intersection
+// (primitiveMetExactly, generated from scene/Primitives.h), but a sphere light: rays meet it
+// exactly (exactSurfacesIntersect), so the culled forms, which rays march, leave it out. The
+// specialised shader meets transformed ones exactly too.
 bool isExactObject(int object)
 {
     int start = objectShapeProgramStart(object);
     ivec4 first = uShapeProgram[start];
     bool single = first.x == OPCODE_PRIMITIVE && uShapeProgram[start + 1].x == OPCODE_END;
-    bool boundedClosedForm = first.y == PRIMITIVE_BOX || first.y == PRIMITIVE_CYLINDER ||
-                             first.y == PRIMITIVE_DISK;
-    return single && (first.y == PRIMITIVE_POLYHEDRON || first.y == PRIMITIVE_CONE ||
-                      (first.y == PRIMITIVE_TORUS &&
-                       uShapeParameters[first.z + 1].x >=
-                           THINNEST_EXACT_TORUS * uShapeParameters[first.z].w) ||
-                      (boundedClosedForm && EXACT_BOXES_CYLINDERS_AND_DISKS != 0) ||
-                      (first.y == PRIMITIVE_SPHERE && objectSphereLight(object) < 0));
+    return single && primitiveMetExactly(first.y, first.z) &&
+           (first.y != PRIMITIVE_SPHERE || objectSphereLight(object) < 0);
 }
 
 void exactSurfacesIntersect(vec3 origin, vec3 direction, float tMin, int only, inout ExactHit hit)
@@ -141,31 +134,8 @@ void exactSurfacesIntersect(vec3 origin, vec3 direction, float tMin, int only, i
         if (!isExactObject(object) || (only >= 0 && object != only))
             continue;
         ivec4 primitive = uShapeProgram[objectShapeProgramStart(object)];
-        vec4 first = uShapeParameters[primitive.z];
-        if (primitive.y == PRIMITIVE_SPHERE) {
-            exactSphere(origin, direction, first, tMin, object, hit);
-        } else if (primitive.y == PRIMITIVE_BOX) {
-            exactBox(origin, direction, first.xyz, uShapeParameters[primitive.z + 1].xyz, tMin,
-                     object, hit);
-        } else if (primitive.y == PRIMITIVE_CYLINDER) {
-            exactCappedCylinder(origin, direction, first.xyz, first.w,
-                                uShapeParameters[primitive.z + 1].x, tMin, object, hit);
-        } else if (primitive.y == PRIMITIVE_TORUS) {
-            exactTorus(origin, direction, first.xyz, first.w, uShapeParameters[primitive.z + 1].x,
-                       tMin, object, hit);
-        } else if (primitive.y == PRIMITIVE_CONE) {
-            exactCone(origin, direction, first.xyz, uShapeParameters[primitive.z + 1].xy, tMin,
-                      object, hit);
-        } else if (primitive.y == PRIMITIVE_DISK) {
-            exactDisk(origin, direction, first, uShapeParameters[primitive.z + 1].xyz, tMin,
-                      object, hit);
-        } else {
-            ConvexInterval outside = wholeRay();
-            for (int plane = 0; plane < primitive.w && loopIterationAllowed(); ++plane)
-                clipOutsideHalfSpace(outside, origin, direction,
-                                     uShapeParameters[primitive.z + plane]);
-            exactHalfSpaceUnion(outside, tMin, object, hit);
-        }
+        exactPrimitiveIntersect(primitive.y, primitive.z, primitive.w, origin, direction, tMin,
+                                object, hit);
     }
 }
 

@@ -16,39 +16,9 @@
 // Hits are moved onto the surface by intersectAlongRay, and normals taken by sceneNormal.
 //
 // Tolerances follow the ray, not the world: a hit is accepted when the distance falls below
-// a fraction (uHitTolerance) of the footprint of the ray's cone there, and never below
-// uMinimumHitDistance, which the host derives from the scene's size. So a scene scaled by
+// a fraction (gHitTolerance) of the footprint of the ray's cone there, and never below
+// gMinimumHitDistance, which the host derives from the scene's size. So a scene scaled by
 // 1e-3 or 1e3 is traced the same way.
-
-uniform float uHitTolerance;        // fraction of the cone's footprint
-uniform float uMinimumHitDistance;  // world units, from the scene's bounds
-uniform float uFarDistance;         // world units, from the scene's bounds
-uniform int uMaxMarchSteps;
-uniform float uOverRelaxation;      // Keinert's omega; 1 is plain sphere tracing
-uniform float uStepScale;           // at most 1: shorter steps for overestimating SDFs
-
-// Read once per pixel, before any branch (see scene_data.glsl): the code below sees copies.
-float uHitToleranceReadOnce;
-float uMinimumHitDistanceReadOnce;
-float uFarDistanceReadOnce;
-int uMaxMarchStepsReadOnce;
-float uOverRelaxationReadOnce;
-float uStepScaleReadOnce;
-void readSphereTracingUniformsOnce()
-{
-    uHitToleranceReadOnce = uHitTolerance;
-    uMinimumHitDistanceReadOnce = uMinimumHitDistance;
-    uFarDistanceReadOnce = uFarDistance;
-    uMaxMarchStepsReadOnce = uMaxMarchSteps;
-    uOverRelaxationReadOnce = uOverRelaxation;
-    uStepScaleReadOnce = uStepScale;
-}
-#define uHitTolerance uHitToleranceReadOnce
-#define uMinimumHitDistance uMinimumHitDistanceReadOnce
-#define uFarDistance uFarDistanceReadOnce
-#define uMaxMarchSteps uMaxMarchStepsReadOnce
-#define uOverRelaxation uOverRelaxationReadOnce
-#define uStepScale uStepScaleReadOnce
 
 // A ray's footprint: `width` at its origin, growing by `spread` per unit of distance.
 struct RayCone {
@@ -63,7 +33,7 @@ float coneFootprint(RayCone cone, float t)
 
 float hitTolerance(RayCone cone, float t)
 {
-    return max(uMinimumHitDistance, uHitTolerance * coneFootprint(cone, t));
+    return max(gMinimumHitDistance, gHitTolerance * coneFootprint(cone, t));
 }
 
 struct MarchHit {
@@ -79,12 +49,36 @@ struct MarchHit {
     bool budgetSpent;  // the step budget ran out: the hit is the closest approach
 };
 
+// No surface met: the ray escaped at t, or nothing was marched.
+MarchHit marchMiss(float t)
+{
+    return MarchHit(false, t, 0.0, -1, 0.0, 0.0, false);
+}
+
+// A surface met within `tolerance` at t, approached at the secant slope `approach`.
+MarchHit marchHit(float t, float sceneDistance, int object, float approach, float tolerance)
+{
+    return MarchHit(true, t, sceneDistance, object, approach, tolerance, false);
+}
+
+// The closest approach to a surface so far, at t: the hit where the step budget runs out.
+MarchHit marchClosestApproach(float t, float sceneDistance, int object, float tolerance)
+{
+    return MarchHit(true, t, sceneDistance, object, 0.0, tolerance, true);
+}
+
+// The budget spent with no surface approached: what a march returns before it has any.
+MarchHit marchNothingApproached()
+{
+    return MarchHit(false, 0.0, 0.0, -1, 0.0, 0.0, true);
+}
+
 // The pieces of the scene the ray may come near, and how far it may meet any (see
 // ray_culling.glsl).
 RayCulling rayCulling(vec3 origin, vec3 direction, RayCone cone)
 {
     return sceneRayCulling(origin, direction, hitTolerance(cone, 0.0),
-                           uHitTolerance * cone.spread);
+                           gHitTolerance * cone.spread);
 }
 
 // Marches the ray from `startDistance` (which the caller knows to be clear of every
@@ -97,7 +91,7 @@ MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone
                      float endDistance, inout int stepsLeft)
 {
     float farDistance = min(endDistance, culling.escapeDistance);
-    float omega = uOverRelaxation;
+    float omega = gOverRelaxation;
     float t = startDistance;
     float stepLength = 0.0;
     float previousRadius = 0.0;
@@ -106,7 +100,7 @@ MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone
     float acceptedT = startDistance;
     float acceptedRadius = 0.0;
     float bestError = FLOAT_MAX;
-    MarchHit best = MarchHit(false, 0.0, 0.0, -1, 0.0, 0.0, true);
+    MarchHit best = marchNothingApproached();
 
     for (; stepsLeft > 0 && loopIterationAllowed(); --stepsLeft) {
         COUNT_MARCH_STEP();
@@ -114,7 +108,7 @@ MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone
             // Escaped, unless a relaxed step jumped past the part of the ray its safe sphere
             // covered: a surface may lie there. Then it is undone as a failed relaxation.
             if (t - stepLength + previousRadius >= farDistance)
-                return MarchHit(false, t, 0.0, -1, 0.0, 0.0, false);
+                return marchMiss(t);
             stepLength -= omega * stepLength;
             omega = 1.0;
             t += stepLength;
@@ -136,7 +130,7 @@ MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone
             stepLength -= omega * stepLength;
             omega = 1.0;
         } else {
-            stepLength = signedRadius * omega * uStepScale;
+            stepLength = signedRadius * omega * gStepScale;
             float tolerance = toleranceScale * hitTolerance(cone, t);
             if (radius < tolerance) {
                 // The secant needs a previous point on the ray's side of the surface: inside
@@ -146,12 +140,12 @@ MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone
                                      ? (acceptedRadius - signedRadius) / (t - acceptedT)
                                      : 0.0;
                 --stepsLeft;
-                return MarchHit(true, t, distance, object, approach, tolerance, false);
+                return marchHit(t, distance, object, approach, tolerance);
             }
             float error = radius / tolerance;
             if (error < bestError) {
                 bestError = error;
-                best = MarchHit(true, t, distance, object, 0.0, tolerance, true);
+                best = marchClosestApproach(t, distance, object, tolerance);
             }
             acceptedT = t;
             acceptedRadius = signedRadius;
@@ -190,7 +184,7 @@ float shadowMarch(vec3 origin, vec3 direction, float insideSign, uint mask, floa
             break;
         acceptedT = t;
         acceptedRadius = radius;
-        t += radius * uStepScale;
+        t += radius * gStepScale;
     }
     return radius;
 }
@@ -210,7 +204,7 @@ float coneClearance(vec3 origin, vec3 axis, float tolerance0, float growth, uint
     for (int step = 0; step < kConeSteps && t < limit && loopIterationAllowed(); ++step) {
         COUNT_WORK(workCameraSteps, 1);
         float clearance = sceneDistanceCulled(origin + t * axis, mask) - tolerance0 - growth * t;
-        float advance = 0.9 * uStepScale * clearance / (1.0 + growth);
+        float advance = 0.9 * gStepScale * clearance / (1.0 + growth);
         // Near a surface the steps shrink geometrically; the rays' own marches, each from
         // here, finish the approach.
         if (advance < tolerance0 + growth * t)

@@ -1,17 +1,22 @@
 #include "app/CommandLine.h"
 
 #include "io/ImageFormats.h"
+#include "settings/SettingsTable.h"
 
 #include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <set>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
 #include <vector>
 
 namespace app {
 
 namespace {
+
+using settings::BoundOption;
 
 bool parseWhole(const std::string& text, long long& value)
 {
@@ -36,15 +41,6 @@ int positiveInteger(const std::string& text, const std::string& what, long long 
     return static_cast<int>(value);
 }
 
-int nonNegativeInteger(const std::string& text, const std::string& what, long long maximum)
-{
-    long long value = 0;
-    if (!parseWhole(text, value) || value < 0 || value > maximum)
-        throw UsageError(what + " must be a whole number from 0 to " + std::to_string(maximum) +
-                         ", not '" + text + "'");
-    return static_cast<int>(value);
-}
-
 double positiveDecimal(const std::string& text, const std::string& what)
 {
     double value = 0.0;
@@ -57,18 +53,152 @@ double positiveDecimal(const std::string& text, const std::string& what)
 // keeps the numbers sane before that.
 constexpr long long kLargestSide = 1 << 16;
 
-}  // namespace
-
-std::filesystem::path CommandLine::outputPath() const
+// The --output paragraph of --help, from the table of formats.
+std::string outputFormatsHelp()
 {
-    if (output)
-        return *output;
-    if (resume)
-        return *resume;
-    return scene.stem().string() + ".ppm";
+    std::string text = "where to write; the extension names the format:";
+    for (const io::ImageFormat& format : io::outputFormats()) {
+        std::string names;
+        for (const std::string& extension : format.extensions)
+            names += (names.empty() ? "" : " ") + extension;
+        names.resize(std::max<std::size_t>(names.size() + 2, 12), ' ');
+        text += "\n" + names + format.holds;
+    }
+    return text;
 }
 
-namespace {
+// A row of the command line's table: a heading of --help, an option of the program's own
+// (a CommandLine member) or a render setting's (a member of CommandLine::settings).
+struct Entry {
+    std::string heading;
+    std::optional<BoundOption<CommandLine>> option;
+    const settings::SettingRow* setting = nullptr;
+
+    static Entry section(std::string title) { return {std::move(title), std::nullopt, nullptr}; }
+    static Entry of(BoundOption<CommandLine> row) { return {"", std::move(row), nullptr}; }
+    static Entry of(const settings::SettingRow& row) { return {"", std::nullopt, &row}; }
+
+    bool isHeading() const { return !option && setting == nullptr; }
+    const settings::OptionDescription& description() const
+    {
+        return option ? option->description : setting->description;
+    }
+    bool isOption() const { return !isHeading() && !description().flag.empty(); }
+    bool spelledAs(const std::string& word) const
+    {
+        const settings::OptionDescription& d = description();
+        return word == d.flag || std::find(d.aliases.begin(), d.aliases.end(), word) != d.aliases.end();
+    }
+    void apply(CommandLine& line, const std::string& value) const
+    {
+        if (option)
+            option->apply(line, value);
+        else
+            setting->apply(line.settings, value);
+    }
+    // The default --help states, as a word ("0.25"); empty where it states none.
+    std::string defaultWord() const
+    {
+        static const CommandLine defaults;
+        if (option)
+            return option->format ? option->format(defaults) : "";
+        return setting->format ? setting->format(defaults.settings) : "";
+    }
+    const std::string& choiceMeanings() const
+    {
+        return option ? option->choiceMeanings : setting->choiceMeanings;
+    }
+};
+
+// settings/Options.def's rows, in its order: the render's options.
+const std::vector<Entry>& renderEntries()
+{
+    using namespace settings;
+    static const std::vector<Entry> entries = {
+#define SECTION(title) Entry::section(title),
+#define OPTION(field, ...) \
+    Entry::of(bindOption<CommandLine>(#field, [](auto& line) -> auto& { return line.field; }, \
+                                      __VA_ARGS__)),
+#define SETTING(Type, field, defaultValue, ...) Entry::of(settingRow(#field)),
+#include "settings/Options.def"
+#undef SECTION
+#undef OPTION
+#undef SETTING
+    };
+    return entries;
+}
+
+const Entry& helpEntry()
+{
+    for (const Entry& entry : renderEntries())
+        if (entry.isOption() && entry.spelledAs("--help"))
+            return entry;
+    throw std::logic_error("settings/Options.def has no --help");
+}
+
+// raytracer merge OUT.exr IN.exr... [--png FILE] [--stats-output FILE]
+const std::vector<Entry>& mergeEntries()
+{
+    using namespace settings;
+    static const std::vector<Entry> entries = {
+        Entry::of(bindOption<CommandLine>(
+            "merge.picture", [](auto& line) -> auto& { return line.merge.picture; },
+            option("--png", "FILE", "the tone-mapped picture too"))),
+        Entry::of(bindOption<CommandLine>(
+            "merge.statisticsOutput", [](auto& line) -> auto& { return line.merge.statisticsOutput; },
+            option("--stats-output", "FILE", "the merged statistics"))),
+        helpEntry(),
+    };
+    return entries;
+}
+
+// raytracer info FILE
+const std::vector<Entry>& infoEntries()
+{
+    static const std::vector<Entry> entries = {helpEntry()};
+    return entries;
+}
+
+// The number of single-character insertions, deletions and substitutions that turn one
+// word into the other (Levenshtein).
+std::size_t editDistance(const std::string& a, const std::string& b)
+{
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+        row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+// " (did you mean --hit-tolerance?)" for the option nearest to `word`, within two edits.
+std::string nearestOptionHint(const std::string& word, const std::vector<Entry>& entries)
+{
+    constexpr std::size_t kMostEdits = 2;
+    std::string nearest;
+    std::size_t nearestDistance = kMostEdits + 1;
+    for (const Entry& entry : entries) {
+        if (!entry.isOption())
+            continue;
+        std::vector<std::string> spellings = entry.description().aliases;
+        spellings.push_back(entry.description().flag);
+        for (const std::string& spelling : spellings) {
+            const std::size_t distance = editDistance(word, spelling);
+            if (distance < nearestDistance) {
+                nearest = entry.description().flag;
+                nearestDistance = distance;
+            }
+        }
+    }
+    return nearest.empty() ? "" : " (did you mean " + nearest + "?)";
+}
 
 bool looksLikeOption(const std::string& argument)
 {
@@ -76,31 +206,42 @@ bool looksLikeOption(const std::string& argument)
            !(std::isdigit(static_cast<unsigned char>(argument[1])) || argument[1] == '.');
 }
 
-// Walks the arguments from `first` on: options (with their values) go to `option`, which
-// returns false for one it does not know, the rest to `positional`. Each option once: a
-// repeated one is more likely a mistake than a wish for the last.
-template <typename OptionHandler>
-void readArguments(int argc, const char* const argv[], int first,
-                   std::vector<std::string>& positional, OptionHandler option)
+// Walks the arguments from `first` on: options (`--name value` or `--name=value`) are
+// applied to `line` by their rows in `entries`, the rest go to `positional`. Each option
+// once: a repeated one is more likely a mistake than a wish for the last.
+void readArguments(int argc, const char* const argv[], int first, const std::vector<Entry>& entries,
+                   CommandLine& line, std::vector<std::string>& positional)
 {
-    std::set<std::string> optionsGiven;
     for (int i = first; i < argc; ++i) {
         const std::string argument = argv[i];
-        auto value = [&](const std::string& name) -> std::string {
-            if (i + 1 >= argc)
-                throw UsageError(name + " needs a value");
-            return argv[++i];
-        };
         if (!looksLikeOption(argument)) {
             positional.push_back(argument);
             continue;
         }
-        if (!option(argument, value))
-            throw UsageError("unknown option '" + argument + "' (see --help)");
-        const std::string name =
-            argument == "-o" ? "--output" : argument == "-h" ? "--help" : argument;
-        if (!optionsGiven.insert(name).second)
-            throw UsageError(name + " is given twice: give each option once");
+        const std::size_t equals = argument.rfind("--", 0) == 0 ? argument.find('=') : std::string::npos;
+        const std::string word = argument.substr(0, equals);
+        const auto entry = std::find_if(entries.begin(), entries.end(), [&](const Entry& e) {
+            return e.isOption() && e.spelledAs(word);
+        });
+        if (entry == entries.end())
+            throw UsageError("unknown option '" + word + "'" + nearestOptionHint(word, entries) +
+                             " (see --help)");
+        const settings::OptionDescription& description = entry->description();
+        std::string value;
+        if (description.isSwitch()) {
+            if (equals != std::string::npos)
+                throw UsageError(description.flag + " takes no value, not '" +
+                                 argument.substr(equals + 1) + "'");
+        } else if (equals != std::string::npos) {
+            value = argument.substr(equals + 1);
+        } else {
+            if (i + 1 >= argc)
+                throw UsageError(word + " needs a value");
+            value = argv[++i];
+        }
+        if (!line.optionsGiven.insert(description.flag).second)
+            throw UsageError(description.flag + " is given twice: give each option once");
+        entry->apply(line, value);
     }
 }
 
@@ -110,12 +251,7 @@ CommandLine parseInfo(int argc, const char* const argv[])
     CommandLine line;
     line.action = Action::Info;
     std::vector<std::string> positional;
-    readArguments(argc, argv, 2, positional, [&](const std::string& argument, auto&) {
-        if (argument != "--help" && argument != "-h")
-            return false;
-        line.action = Action::Help;
-        return true;
-    });
+    readArguments(argc, argv, 2, infoEntries(), line, positional);
     if (line.action == Action::Help)
         return line;
     if (positional.size() != 1)
@@ -130,17 +266,7 @@ CommandLine parseMerge(int argc, const char* const argv[])
     CommandLine line;
     line.action = Action::Merge;
     std::vector<std::string> positional;
-    readArguments(argc, argv, 2, positional, [&](const std::string& argument, auto& value) {
-        if (argument == "--help" || argument == "-h")
-            line.action = Action::Help;
-        else if (argument == "--png")
-            line.merge.picture = value(argument);
-        else if (argument == "--stats-output")
-            line.merge.statisticsOutput = value(argument);
-        else
-            return false;
-        return true;
-    });
+    readArguments(argc, argv, 2, mergeEntries(), line, positional);
     if (line.action == Action::Help)
         return line;
     if (positional.size() < 2)
@@ -156,123 +282,9 @@ CommandLine parseMerge(int argc, const char* const argv[])
     return line;
 }
 
-}  // namespace
-
-CommandLine parseCommandLine(int argc, const char* const argv[])
+// SCENE [WIDTH HEIGHT] [SECONDS]
+void readPositional(const std::vector<std::string>& positional, CommandLine& line)
 {
-    // A scene file called "info" or "merge" is ./info or ./merge.
-    if (argc > 1 && std::string(argv[1]) == "info")
-        return parseInfo(argc, argv);
-    if (argc > 1 && std::string(argv[1]) == "merge")
-        return parseMerge(argc, argv);
-
-    CommandLine line;
-    std::vector<std::string> positional;
-    readArguments(argc, argv, 1, positional, [&](const std::string& argument, auto& value) {
-        if (argument == "--help" || argument == "-h") {
-            line.action = Action::Help;
-        } else if (argument == "--version") {
-            line.action = Action::Version;
-        } else if (argument == "--features") {
-            line.action = Action::PrintFeatures;
-        } else if (argument == "--print-shader") {
-            line.action = Action::PrintShader;
-        } else if (argument == "--spp") {
-            line.samplesPerPixel = positiveInteger(value(argument), "--spp", 1 << 24);
-        } else if (argument == "--target-error") {
-            const double error = positiveDecimal(value(argument), "--target-error");
-            if (error > 1.0)
-                throw UsageError("--target-error is a relative error, above 0 and at most 1 "
-                                 "(0.01 is 1 %)");
-            line.targetError = error;
-        } else if (argument == "--min-spp") {
-            line.adaptiveSampling.minimumSamples =
-                positiveInteger(value(argument), "--min-spp", 1 << 24);
-        } else if (argument == "--adaptive-tile") {
-            line.adaptiveSampling.tileSize = positiveInteger(value(argument), "--adaptive-tile", 256);
-        } else if (argument == "--uniform-sampling") {
-            line.uniformSampling = true;
-        } else if (argument == "--output" || argument == "-o") {
-            line.output = value(argument);
-        } else if (argument == "--stats-output") {
-            line.statisticsOutput = value(argument);
-        } else if (argument == "--headless") {
-            line.headless = true;
-        } else if (argument == "--quiet") {
-            line.quiet = true;
-        } else if (argument == "--seed") {
-            long long seed = 0;
-            const std::string text = value(argument);
-            if (!parseWhole(text, seed) || seed < 0)
-                throw UsageError("--seed must be a whole number of 0 or more, not '" + text + "'");
-            line.settings.seed = static_cast<std::uint64_t>(seed);
-            line.seedGiven = true;
-        } else if (argument == "--no-specialize") {
-            line.settings.variant = settings::ShaderVariant::General;
-        } else if (argument == "--hit-tolerance") {
-            line.settings.hitTolerance =
-                static_cast<float>(positiveDecimal(value(argument), "--hit-tolerance"));
-        } else if (argument == "--max-steps") {
-            line.settings.maxMarchSteps = positiveInteger(value(argument), "--max-steps", 1 << 20);
-        } else if (argument == "--over-relaxation") {
-            const double omega = positiveDecimal(value(argument), "--over-relaxation");
-            if (omega < 1.0 || omega >= 2.0)
-                throw UsageError("--over-relaxation must be at least 1 and below 2");
-            line.settings.overRelaxation = static_cast<float>(omega);
-        } else if (argument == "--step-scale") {
-            const double scale = positiveDecimal(value(argument), "--step-scale");
-            if (scale > 1.0)
-                throw UsageError("--step-scale must be above 0 and at most 1");
-            line.settings.stepScale = static_cast<float>(scale);
-        } else if (argument == "--samples-per-frame") {
-            line.settings.samplesPerFrame =
-                positiveInteger(value(argument), "--samples-per-frame", 1 << 16);
-            line.samplesPerFrameGiven = true;
-        } else if (argument == "--band-seconds") {
-            double seconds = 0.0;
-            const std::string text = value(argument);
-            if (!parseDecimal(text, seconds) || seconds < 0.0)
-                throw UsageError("--band-seconds must be a number of 0 or more, not '" + text +
-                                 "'");
-            line.settings.secondsPerBand = seconds;
-        } else if (argument == "--max-bounces") {
-            line.settings.maxBounces = nonNegativeInteger(value(argument), "--max-bounces", 1024);
-        } else if (argument == "--rr-depth") {
-            line.settings.russianRouletteDepth =
-                nonNegativeInteger(value(argument), "--rr-depth", 1024);
-        } else if (argument == "--no-mis") {
-            line.settings.multipleImportanceSampling = false;
-        } else if (argument == "--exact-geometry") {
-            line.settings.exactGeometry = true;
-        } else if (argument == "--no-culling") {
-            line.settings.rayCulling = false;
-        } else if (argument == "--fresnel") {
-            const std::string model = value(argument);
-            if (model == "schlick")
-                line.settings.dielectricFresnel = settings::FresnelModel::Schlick;
-            else if (model == "exact")
-                line.settings.dielectricFresnel = settings::FresnelModel::Exact;
-            else
-                throw UsageError("--fresnel must be 'schlick' or 'exact', not '" + model + "'");
-        } else if (argument == "--sampler") {
-            const std::string kind = value(argument);
-            if (kind == "sobol")
-                line.settings.sampler = settings::SamplerKind::Sobol;
-            else if (kind == "independent")
-                line.settings.sampler = settings::SamplerKind::Independent;
-            else
-                throw UsageError("--sampler must be 'sobol' or 'independent', not '" + kind +
-                                 "'");
-        } else if (argument == "--resume") {
-            line.resume = value(argument);
-        } else {
-            return false;
-        }
-        return true;
-    });
-
-    if (line.action == Action::Help || line.action == Action::Version)
-        return line;
     if (positional.empty())
         throw UsageError("no scene file given (see --help)");
     line.scene = positional[0];
@@ -287,6 +299,33 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
         line.seconds = positiveDecimal(positional[3], "SECONDS");
     if (positional.size() > 4)
         throw UsageError("unexpected argument '" + positional[4] + "' (see --help)");
+}
+
+}  // namespace
+
+std::filesystem::path CommandLine::outputPath() const
+{
+    if (output)
+        return *output;
+    if (resume)
+        return *resume;
+    return scene.stem().string() + ".ppm";
+}
+
+CommandLine parseCommandLine(int argc, const char* const argv[])
+{
+    // A scene file called "info" or "merge" is ./info or ./merge.
+    if (argc > 1 && std::string(argv[1]) == "info")
+        return parseInfo(argc, argv);
+    if (argc > 1 && std::string(argv[1]) == "merge")
+        return parseMerge(argc, argv);
+
+    CommandLine line;
+    std::vector<std::string> positional;
+    readArguments(argc, argv, 1, renderEntries(), line, positional);
+    if (line.action == Action::Help || line.action == Action::Version)
+        return line;
+    readPositional(positional, line);
     if (line.resume && line.action == Action::Render && !line.isBatch())
         throw UsageError("--resume goes on to an end: give --spp N (samples per pixel in all), "
                          "--target-error E or SECONDS (more)");
@@ -299,18 +338,88 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
 
 namespace {
 
-// The --output paragraph of --help, from the table of formats.
-std::string outputFormatsHelp()
+constexpr std::size_t kHelpWidth = 92;
+constexpr std::size_t kHelpColumn = 24;
+
+// `text` wrapped at kHelpWidth, every line after the first indented to kHelpColumn; a
+// newline in `text` starts a line there too, and a line that fits is kept as it is written
+// (a list's alignment).
+std::string wrapHelp(const std::string& text)
 {
-    std::string text = "  --output FILE         where to write; the extension names the format:";
-    for (const io::ImageFormat& format : io::outputFormats()) {
-        std::string names;
-        for (const std::string& extension : format.extensions)
-            names += (names.empty() ? "" : " ") + extension;
-        names.resize(std::max<std::size_t>(names.size() + 2, 12), ' ');
-        text += "\n                        " + names + format.holds;
+    const std::string indent(kHelpColumn, ' ');
+    std::string result;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t newline = std::min(text.find('\n', start), text.size());
+        const std::string paragraph = text.substr(start, newline - start);
+        if (kHelpColumn + paragraph.size() <= kHelpWidth) {
+            result += paragraph;
+        } else {
+            std::istringstream words(paragraph);
+            std::size_t column = kHelpColumn;
+            bool first = true;
+            for (std::string word; words >> word; first = false) {
+                if (!first && column + 1 + word.size() > kHelpWidth) {
+                    result += "\n" + indent;
+                    column = kHelpColumn;
+                } else if (!first) {
+                    result += ' ';
+                    ++column;
+                }
+                result += word;
+                column += word.size();
+            }
+        }
+        if (newline == text.size())
+            return result;
+        result += "\n" + indent;
+        start = newline + 1;
     }
-    // No newline at the end: the text that follows it in usageText starts with one.
+}
+
+// The help's "{default}" replaced by the default, or "(default ...)" appended.
+std::string withDefault(std::string help, const std::string& value)
+{
+    const std::string placeholder = "{default}";
+    const std::size_t at = help.find(placeholder);
+    if (at != std::string::npos)
+        return help.replace(at, placeholder.size(), value);
+    return help + " (" + value + ")";
+}
+
+std::string helpLine(const Entry& entry)
+{
+    const settings::OptionDescription& d = entry.description();
+    std::string names;
+    for (const std::string& alias : d.aliases)
+        names += alias + ", ";
+    names = "  " + names + d.flag + (d.valueName.empty() ? "" : " " + d.valueName);
+    if (names.size() + 1 > kHelpColumn)
+        names += "\n" + std::string(kHelpColumn, ' ');
+    else
+        names.resize(kHelpColumn, ' ');
+    std::string text = d.help;
+    if (d.showDefault) {
+        if (!d.defaultText.empty())
+            text = withDefault(text, "default: " + d.defaultText);
+        else if (const std::string word = entry.defaultWord(); !word.empty())
+            text = withDefault(text, "default " + word);
+    }
+    if (!entry.choiceMeanings().empty())
+        text += ". " + entry.choiceMeanings();
+    return names + wrapHelp(text) + "\n";
+}
+
+// The options' part of --help, from the table.
+std::string optionsHelp()
+{
+    std::string text;
+    for (const Entry& entry : renderEntries()) {
+        if (entry.isHeading())
+            text += "\n" + (entry.heading.empty() ? "" : entry.heading + ":\n");
+        else if (entry.isOption())
+            text += helpLine(entry);
+    }
     return text;
 }
 
@@ -328,7 +437,8 @@ Renders SCENE (a .in scene file) by path tracing on the GPU, WIDTH x HEIGHT pixe
 is closed (Escape closes it; its panel, Tab, lists the keys and mouse actions). With
 SECONDS the render runs that long, then writes the tone-mapped image as SCENE-NAME.ppm in
 the current folder (or --output). Without a display, or with --headless, rendering uses
-OSMesa and opens no window. Each option may be given once.
+OSMesa and opens no window. Each option may be given once, as --name VALUE or
+--name=VALUE.
 
 EXR and PNG files describe themselves in their headers (samples, seeds, settings, the
 scene's SHA-256, the program); an EXR also holds each pixel's sample count and second
@@ -339,68 +449,7 @@ moments, so that renders can be merged and resumed (docs/SCALE_OUT.md):
                         --png FILE: the tone-mapped picture too; --stats-output FILE: the
                         merged statistics
   info                  prints what a file says of itself
-
-output:
-  --spp N               stop after exactly N samples per pixel (deterministic for a seed);
-                        with --target-error, the most a pixel may take
-  --target-error E      stop once the estimated error is E: the relative RMS error, as a
-                        rel RMSE against the converged image (0.01 is 1 %), estimated from
-                        the per-pixel variance with its uncertainty (docs/ACCURACY.md). The
-                        samples go where the error is (adaptive sampling): a tile of pixels
-                        stops once it holds its share. With SECONDS or --spp, whichever comes
-                        first; the summary says which, and the error reached
-  --min-spp N           with --target-error, the samples every pixel takes before it may
-                        stop (default 32), so that a rare bright path is not missed
-  --adaptive-tile N     with --target-error, pixels along the side of a tile that stops as
-                        one (default 8; 1: every pixel alone)
-  --uniform-sampling    with --target-error, every pixel takes the same samples
-)"
-           + outputFormatsHelp() + R"(
-  --stats-output FILE   also write per-pixel statistics (.exr or .pfm): samples, discarded
-                        samples, variance of the mean. The image and the statistics are
-                        written together or not at all; an interrupted render marks them
-                        (attribute raytracer:interrupted, where the format holds attributes)
-  --resume FILE         go on from the render FILE (an .exr written by this program) until
-                        it holds --spp N samples per pixel in all, or for SECONDS more, with
-                        new samples only; writes FILE again (or --output). The scene, size
-                        and image-changing settings must be FILE's; WIDTH HEIGHT default to
-                        FILE's, --seed to its first seed. Renders headless
-  --headless            render with OSMesa even when a display is available
-  --seed N              random seed (default 1)
-  --samples-per-frame N paths per pixel per frame (default: chosen so that a frame takes
-                        about 0.5 s in a batch render, 0.15 s in a window, at most 16)
-  --band-seconds S      draw frames in bands of about S seconds each, so a render stops
-                        or a window responds between them (default 0.25; 0: whole frames)
-  --quiet               no progress line
-
-accuracy (see docs/ACCURACY.md for what each costs):
-  --hit-tolerance F     accept a hit within F pixel footprints (default 0.25)
-  --max-steps N         sphere-tracing step limit per ray (default 512)
-  --over-relaxation W   over-relaxation factor, 1 to < 2 (default 1.2; 1 disables it)
-  --step-scale F        multiply every sphere-tracing step by F in (0, 1] (default 1):
-                        conservative steps for user SDFs that overestimate distances
-  --max-bounces N       scattering events per path (default 16)
-  --rr-depth N          bounces before Russian roulette may end a path (default 4)
-  --no-mis              light sampling only for sphere lights, no multiple importance sampling
-  --fresnel MODEL       dielectric Fresnel: schlick (default) or exact
-  --sampler KIND        sobol (default): Owen-scrambled Sobol points for the pixel and the
-                        first four bounces; independent: random numbers for every decision
-
-shader:
-  --features            print the features SCENE uses and exit
-  --print-shader        print the fragment shader assembled for SCENE and exit
-  --no-specialize       use the general shader with every feature instead of one built
-                        for the scene
-  --no-culling          march every ray against every object (culling the objects a ray
-                        cannot come near is exact; this only shows what it saves)
-  --exact-geometry      find surfaces by exact ray intersection instead of sphere tracing
-                        (spheres, polyhedra, boxes, cylinders, disks, cones, tori no thinner
-                        than 1:10, user SDFs with an @intersect function): the reference for
-                        the sphere tracer's geometric error (docs/ACCURACY.md)
-
-  --help                this text
-  --version             the program's version
-)";
+)" + optionsHelp();
 }
 
 }  // namespace app

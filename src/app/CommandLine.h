@@ -1,10 +1,11 @@
 #pragma once
 #include "film/AdaptiveSampling.h"
+#include "settings/OptionDescription.h"
 #include "settings/RenderSettings.h"
 
 #include <filesystem>
 #include <optional>
-#include <stdexcept>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,9 @@ struct MergeRequest {
     std::optional<std::filesystem::path> statisticsOutput;
 };
 
+// What the command line asks for. Its options, and the render settings among them, are the
+// rows of settings/Options.def: parseCommandLine, usageText and the defaults --help states
+// all come from there (a field's default is the one written here).
 struct CommandLine {
     Action action = Action::Render;
     std::filesystem::path scene;
@@ -35,15 +39,16 @@ struct CommandLine {
     std::optional<std::filesystem::path> output;
     std::optional<std::filesystem::path> statisticsOutput;
     bool headless = false;
-    // --samples-per-frame was given: keep it; otherwise the render picks it (RenderCommand).
-    bool samplesPerFrameGiven = false;
     bool quiet = false;
     settings::RenderSettings settings;
-    // WIDTH HEIGHT and --seed were given (a resumed render takes the file's otherwise).
+    // WIDTH HEIGHT were given (a resumed render takes the file's otherwise).
     bool sizeGiven = false;
-    bool seedGiven = false;
     // --resume FILE: go on from the render FILE holds.
     std::optional<std::filesystem::path> resume;
+    // The options given, by their table names ("--seed", "--output" for -o): a resumed render
+    // takes the file's seed unless --seed was given, a render picks its samples per frame
+    // unless --samples-per-frame was.
+    std::set<std::string> optionsGiven;
 
     std::filesystem::path infoFile;  // raytracer info FILE
     MergeRequest merge;              // raytracer merge ...
@@ -56,14 +61,14 @@ struct CommandLine {
     // Where the picture goes: --output, else the file resumed, else <scene name>.ppm in the
     // current folder.
     std::filesystem::path outputPath() const;
+    bool given(const std::string& flag) const { return optionsGiven.count(flag) != 0; }
 };
 
 // A command line that cannot be run; what() is the message for the user.
-class UsageError : public std::runtime_error {
-public:
-    using std::runtime_error::runtime_error;
-};
+using settings::UsageError;
 
+// Options are written `--name value` or `--name=value`, each once; an unknown one is refused
+// with the known one nearest to it in spelling (within two edits), if any.
 CommandLine parseCommandLine(int argc, const char* const argv[]);
 std::string usageText();
 

@@ -91,8 +91,9 @@ int runInfo(const std::filesystem::path& path)
         printLine("merged from", files);
     }
     printLine("program", film::describeProgram(*metadata));
-    for (const film::ImageSetting& setting : film::imageSettings())
-        printLine(setting.label, setting.text(metadata->settings) + "  (" + setting.option + ")");
+    for (const settings::SettingRow* setting : film::imageSettings())
+        printLine(setting->description.metadataLabel,
+                  setting->format(metadata->settings) + "  (" + setting->setBy() + ")");
     return kExitSuccess;
 }
 

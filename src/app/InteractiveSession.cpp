@@ -77,13 +77,13 @@ InteractiveSession::InteractiveSession(platform::GlfwWindowContext& window,
     panelSettings_.environment = renderer.settings().environmentLight;
 }
 
-bool InteractiveSession::reachedEnd(Clock::time_point start) const
+bool InteractiveSession::reachedEnd() const
 {
     if (line_.samplesPerPixel && renderer_.samplesPerPixel() >= *line_.samplesPerPixel)
         return true;
     if (targetReached_)
         return true;
-    return line_.seconds && secondsBetween(start, Clock::now()) >= *line_.seconds;
+    return line_.seconds && secondsBetween(start_, Clock::now()) >= *line_.seconds;
 }
 
 bool InteractiveSession::run()
@@ -91,115 +91,135 @@ bool InteractiveSession::run()
     if (!line_.quiet)
         std::cout << "raytracer: Tab shows the statistics panel, with the settings and the keys"
                   << std::endl;
-    const Clock::time_point start = Clock::now();
+    start_ = Clock::now();
     restartClock();
-    lastViewChange_ = start - std::chrono::seconds(1);
-    Clock::time_point lastIteration = start;
-    Clock::time_point lastWatch = start;
-    Clock::time_point lastEstimate = start;
-    std::optional<double> relativeError;
-    interaction::SamplesPerFrame pacing(line_.settings.samplesPerFrame, line_.samplesPerFrameGiven,
-                           kTargetFrameSeconds);
+    lastViewChange_ = start_ - std::chrono::seconds(1);
+    lastIteration_ = start_;
+    lastWatch_ = start_;
+    lastEstimate_ = start_;
+    interaction::SamplesPerFrame pacing(line_.settings.samplesPerFrame,
+                                        line_.given("--samples-per-frame"), kTargetFrameSeconds);
     bool settingsChanged = false;
     bool reached = false;
-    auto keepGoing = [&] {
-        // Input ends a frame between bands, so that the view answers at once.
-        return !interrupt_.requested() && !window_.closeRequested() &&
-               !window_.hasPendingInput() && !reachedEnd(start);
-    };
-
     while (!interrupt_.requested() && !window_.closeRequested()) {
-        if (reachedEnd(start)) {
+        if (reachedEnd()) {
             reached = true;
             break;
         }
         const Clock::time_point now = Clock::now();
-        const double sinceLastIteration =
-            std::min(secondsBetween(lastIteration, now), kLongestFlightStep);
-        lastIteration = now;
-
         const platform::WindowInput input = window_.takeInput();
-        bool viewChanged = answerInput(input, sinceLastIteration) || settingsChanged;
-        viewChanged = followWindowSize() || viewChanged;
-        if (secondsBetween(lastWatch, now) >= kWatchIntervalSeconds) {
-            lastWatch = now;
-            if (reloadChangedFiles())
-                restartClock();
-        }
-        if (viewChanged) {
-            renderer_.setCamera(camera_.camera());
-            lastViewChange_ = now;
-            restartClock();
-            relativeError.reset();
-            secondsToTarget_.reset();
-        }
-
-        const bool dragging = input.isDown(platform::MouseButton::Left) ||
-                              input.isDown(platform::MouseButton::Right) ||
-                              input.isDown(platform::MouseButton::Middle);
-        const bool settling = secondsBetween(lastViewChange_, now) < kSettleSeconds;
-        if (viewChanged) {
-            if (previewFrameSeconds_ == 0.0 && renderer_.lastSecondsPerSample() > 0.0)
-                previewDivisor_ = interaction::firstPreviewDivisor(renderer_.lastSecondsPerSample());
-            renderer_.renderPreview(previewDivisor_, kPreviewBounces);
-        } else if (renderer_.showsPreview() && (settling || dragging)) {
-            // The view may go on changing: keep the preview, and do not spin.
-            window_.waitForInput(0.01);
-        } else {
-            // The first frame shows at once, whatever it will cost.
-            int samples = renderer_.frames() == 0 ? 1 : pacing.samples();
-            if (line_.samplesPerPixel)
-                samples = std::min(samples, *line_.samplesPerPixel - renderer_.samplesPerPixel());
-            if (renderer_.renderFrame(keepGoing, samples)) {
-                pacing.afterFrame(renderer_.frames(), renderer_.lastSecondsPerSample(),
-                                  line_.targetError ? secondsToTarget_ : std::nullopt);
-                if (rebuildStart_) {
-                    char text[160];
-                    std::snprintf(text, sizeof text,
-                                  "reloaded: structure changed, shader rebuilt; first frame "
-                                  "%.2f s after the edit was seen",
-                                  secondsBetween(*rebuildStart_, Clock::now()));
-                    setStatus(text, false);
-                    rebuildStart_.reset();
-                }
-            }
-        }
-
-        if (!renderer_.showsPreview() && renderer_.samplesPerPixel() >= 2 &&
-            secondsBetween(lastEstimate, Clock::now()) >= kEstimateIntervalSeconds) {
-            lastEstimate = Clock::now();
-            const auto estimate = film::estimateRelativeError(renderer_.accumulation());
-            relativeError.reset();
-            if (estimate)
-                relativeError = estimate->relativeError;
-            const double accumulated = secondsBetween(accumulationStart_, lastEstimate);
-            if (relativeError)
-                history_.add(accumulated, static_cast<float>(*relativeError));
-            // A window given --target-error samples every pixel alike, and ends as a batch
-            // render to that target does (ErrorTargetRun).
-            if (estimate && line_.targetError) {
-                targetReached_ =
-                    estimate->upperBound() <= *line_.targetError &&
-                    renderer_.samplesPerPixel() >= line_.adaptiveSampling.minimumSamples;
-                secondsToTarget_ = history_.secondsLeftToReach(*line_.targetError, accumulated,
-                                                               estimate->upperBound());
-            }
-        }
-        settingsChanged = showFrame(relativeError);
-        if (viewChanged) {
-            const double frameSeconds = secondsBetween(now, Clock::now());
-            previewDivisor_ = interaction::nextPreviewDivisor(previewDivisor_, frameSeconds);
-            // Smoothed over about ten frames, for the title and the panel.
-            previewFrameSeconds_ = previewFrameSeconds_ > 0.0
-                                       ? 0.9 * previewFrameSeconds_ + 0.1 * frameSeconds
-                                       : frameSeconds;
-        }
+        const bool viewChanged = followChanges(input, now, settingsChanged);
+        drawNext(input, viewChanged, now, pacing);
+        updateErrorEstimate();
+        settingsChanged = showFrame(relativeError_);
+        if (viewChanged)
+            timePreviewFrame(now);
     }
     // What is written at the end is an accumulation, not the coarse picture of a moving view.
     if (renderer_.showsPreview() && (line_.isBatch() || line_.output))
         renderer_.renderFrame({}, 1);
-    renderSeconds_ = secondsBetween(start, Clock::now());
+    renderSeconds_ = secondsBetween(start_, Clock::now());
     return reached;
+}
+
+bool InteractiveSession::followChanges(const platform::WindowInput& input, Clock::time_point now,
+                                       bool settingsChanged)
+{
+    const double sinceLastIteration =
+        std::min(secondsBetween(lastIteration_, now), kLongestFlightStep);
+    lastIteration_ = now;
+    bool viewChanged = answerInput(input, sinceLastIteration) || settingsChanged;
+    viewChanged = followWindowSize() || viewChanged;
+    if (secondsBetween(lastWatch_, now) >= kWatchIntervalSeconds) {
+        lastWatch_ = now;
+        if (reloadChangedFiles())
+            restartClock();
+    }
+    if (viewChanged) {
+        renderer_.setCamera(camera_.camera());
+        lastViewChange_ = now;
+        restartClock();
+        relativeError_.reset();
+        secondsToTarget_.reset();
+    }
+    return viewChanged;
+}
+
+void InteractiveSession::drawNext(const platform::WindowInput& input, bool viewChanged,
+                                  Clock::time_point now, interaction::SamplesPerFrame& pacing)
+{
+    const bool dragging = input.isDown(platform::MouseButton::Left) ||
+                          input.isDown(platform::MouseButton::Right) ||
+                          input.isDown(platform::MouseButton::Middle);
+    const bool settling = secondsBetween(lastViewChange_, now) < kSettleSeconds;
+    if (viewChanged) {
+        if (previewFrameSeconds_ == 0.0 && renderer_.lastSecondsPerSample() > 0.0)
+            previewDivisor_ = interaction::firstPreviewDivisor(renderer_.lastSecondsPerSample());
+        renderer_.renderPreview(previewDivisor_, kPreviewBounces);
+    } else if (renderer_.showsPreview() && (settling || dragging)) {
+        // The view may go on changing: keep the preview, and do not spin.
+        window_.waitForInput(0.01);
+    } else {
+        accumulate(pacing);
+    }
+}
+
+void InteractiveSession::accumulate(interaction::SamplesPerFrame& pacing)
+{
+    auto keepGoing = [&] {
+        // Input ends a frame between bands, so that the view answers at once.
+        return !interrupt_.requested() && !window_.closeRequested() &&
+               !window_.hasPendingInput() && !reachedEnd();
+    };
+    // The first frame shows at once, whatever it will cost.
+    int samples = renderer_.frames() == 0 ? 1 : pacing.samples();
+    if (line_.samplesPerPixel)
+        samples = std::min(samples, *line_.samplesPerPixel - renderer_.samplesPerPixel());
+    if (!renderer_.renderFrame(keepGoing, samples))
+        return;
+    pacing.afterFrame(renderer_.frames(), renderer_.lastSecondsPerSample(),
+                      line_.targetError ? secondsToTarget_ : std::nullopt);
+    if (rebuildStart_) {
+        char text[160];
+        std::snprintf(text, sizeof text,
+                      "reloaded: structure changed, shader rebuilt; first frame "
+                      "%.2f s after the edit was seen",
+                      secondsBetween(*rebuildStart_, Clock::now()));
+        setStatus(text, false);
+        rebuildStart_.reset();
+    }
+}
+
+void InteractiveSession::updateErrorEstimate()
+{
+    if (renderer_.showsPreview() || renderer_.samplesPerPixel() < 2 ||
+        secondsBetween(lastEstimate_, Clock::now()) < kEstimateIntervalSeconds)
+        return;
+    lastEstimate_ = Clock::now();
+    const auto estimate = film::estimateRelativeError(renderer_.accumulation());
+    relativeError_.reset();
+    if (estimate)
+        relativeError_ = estimate->relativeError;
+    const double accumulated = secondsBetween(accumulationStart_, lastEstimate_);
+    if (relativeError_)
+        history_.add(accumulated, static_cast<float>(*relativeError_));
+    // A window given --target-error samples every pixel alike, and ends as a batch render
+    // to that target does (ErrorTargetRun).
+    if (estimate && line_.targetError) {
+        targetReached_ = estimate->upperBound() <= *line_.targetError &&
+                         renderer_.samplesPerPixel() >= line_.adaptiveSampling.minimumSamples;
+        secondsToTarget_ = history_.secondsLeftToReach(*line_.targetError, accumulated,
+                                                       estimate->upperBound());
+    }
+}
+
+void InteractiveSession::timePreviewFrame(Clock::time_point frameStart)
+{
+    const double frameSeconds = secondsBetween(frameStart, Clock::now());
+    previewDivisor_ = interaction::nextPreviewDivisor(previewDivisor_, frameSeconds);
+    // Smoothed over about ten frames, for the title and the panel.
+    previewFrameSeconds_ =
+        previewFrameSeconds_ > 0.0 ? 0.9 * previewFrameSeconds_ + 0.1 * frameSeconds : frameSeconds;
 }
 
 bool InteractiveSession::answerInput(const platform::WindowInput& input, double seconds)

@@ -2,6 +2,7 @@
 #include "app/CommandLine.h"
 #include "interaction/ConvergenceHistory.h"
 #include "interaction/FileWatcher.h"
+#include "interaction/FramePacing.h"
 #include "app/Interrupt.h"
 #include "interaction/StatisticsPanel.h"
 #include "platform/GlfwWindowContext.h"
@@ -44,7 +45,22 @@ public:
 private:
     using Clock = std::chrono::steady_clock;
 
-    bool reachedEnd(Clock::time_point start) const;
+    // The end the command line set (SECONDS, --spp, --target-error) is reached.
+    bool reachedEnd() const;
+    // Follows the input, the window's size and the files watched; true when the view
+    // changed, which uploads the camera and restarts the accumulation.
+    bool followChanges(const platform::WindowInput& input, Clock::time_point now,
+                       bool settingsChanged);
+    // The next picture: a preview while the view changes, none while it may go on changing
+    // (a drag, a pause between its events), else more samples.
+    void drawNext(const platform::WindowInput& input, bool viewChanged, Clock::time_point now,
+                  interaction::SamplesPerFrame& pacing);
+    void accumulate(interaction::SamplesPerFrame& pacing);
+    // Now and then, the estimate of the image's error and, with --target-error, of the time
+    // left to it.
+    void updateErrorEstimate();
+    // The preview's resolution follows the time its frame (started at `frameStart`) took.
+    void timePreviewFrame(Clock::time_point frameStart);
     // Moves the camera and acts on keys; true when the view changed.
     bool answerInput(const platform::WindowInput& input, double seconds);
     // Settings tuned in the panel; true when the view changed (exposure does not change it).
@@ -74,13 +90,18 @@ private:
     interaction::PanelSettings panelSettings_;
     interaction::ConvergenceHistory history_;
     bool targetReached_ = false;               // --target-error
+    std::optional<double> relativeError_;      // estimated, every kEstimateIntervalSeconds
     std::optional<double> secondsToTarget_;    // predicted, from history_
     std::string status_;
     bool statusIsError_ = false;
     int previewDivisor_ = 2;
     double previewFrameSeconds_ = 0.0;  // smoothed time of a frame while the view changes
+    Clock::time_point start_;  // of run()
     Clock::time_point accumulationStart_;
     Clock::time_point lastViewChange_;
+    Clock::time_point lastIteration_;
+    Clock::time_point lastWatch_;
+    Clock::time_point lastEstimate_;
     Clock::time_point lastTitle_;
     // A structural reload: when it started, until the first frame after it is drawn.
     std::optional<Clock::time_point> rebuildStart_;

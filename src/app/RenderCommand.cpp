@@ -23,6 +23,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 
 namespace app {
 
@@ -60,7 +61,7 @@ film::RenderFile readResumedRender(CommandLine& line, const scene::Scene& scene,
         line.width = held.width;
         line.height = held.height;
     }
-    if (!line.seedGiven && !held.sampleRanges.empty())
+    if (!line.given("--seed") && !held.sampleRanges.empty())
         line.settings.seed = held.sampleRanges.front().seed;
 
     film::RenderMetadata asked = held;
@@ -114,13 +115,32 @@ std::string targetStop(const CommandLine& line, const ErrorTargetRun& run, bool 
     return "stopped at the time limit before it";
 }
 
-}  // namespace
+// Everything a render needs before its first frame, made in this order: the context before
+// the renderer, which draws in it (and is destroyed before it).
+struct RenderSetup {
+    scene::Scene scene;
+    std::string sceneDigest;  // of the scene's files (SceneDigest.h)
+    std::optional<film::RenderFile> resumed;
+    bool writesFile = false;
+    std::unique_ptr<platform::GlContext> context;
+    std::unique_ptr<render::ProgressiveRenderer> renderer;
+    std::optional<ErrorTargetRun> errorTarget;
+    int samplesResumed = 0;  // samples per pixel of the file resumed
+    int fewestResumed = 0;   // the fewest any of its pixels holds
+    double setupSeconds = 0.0;
+};
 
-int runRender(const CommandLine& commandLine)
+// How the render went: stopped before the end the command line set (its window closed), and
+// for how long it rendered.
+struct RenderRun {
+    bool endedEarly = false;
+    double seconds = 0.0;
+};
+
+// The output names make sense together: the statistics are neither the image nor the file
+// resumed.
+void checkOutputNames(const CommandLine& line)
 {
-    // From the start: Ctrl-C while the shader compiles must not kill the program unseen.
-    InterruptWatch interrupt;
-    CommandLine line = commandLine;
     if (line.statisticsOutput && io::resolveToSameFile(line.outputPath(), *line.statisticsOutput))
         throw UsageError("--stats-output " + line.statisticsOutput->string() + " names the same "
                          "file as the image, " + line.outputPath().string() +
@@ -129,14 +149,21 @@ int runRender(const CommandLine& commandLine)
         io::resolveToSameFile(*line.resume, *line.statisticsOutput))
         throw UsageError("--stats-output " + line.statisticsOutput->string() + " names the "
                          "render being resumed: give another file");
+}
+
+// Loads the scene and the render resumed, checks the outputs can be written, makes the
+// context and the renderer. `line` takes a resumed file's size and seed where it gives none.
+RenderSetup prepareRender(CommandLine& line)
+{
+    checkOutputNames(line);
+    RenderSetup setup;
     // Every texture must be readable before a window opens or a frame is rendered.
-    const scene::Scene scene = loadScene(line.scene);
-    std::string sceneDigest = sceneSha256(filesOfScene(line.scene, scene));
-    std::optional<film::RenderFile> resumed;
+    setup.scene = loadScene(line.scene);
+    setup.sceneDigest = sceneSha256(filesOfScene(line.scene, setup.scene));
     if (line.resume)
-        resumed = readResumedRender(line, scene, sceneDigest);
-    const bool writesFile = line.isBatch() || line.output.has_value();
-    if (writesFile)
+        setup.resumed = readResumedRender(line, setup.scene, setup.sceneDigest);
+    setup.writesFile = line.isBatch() || line.output.has_value();
+    if (setup.writesFile)
         io::checkOutputsCanBeWritten(outputRequests(line));
     // A resumed render goes on where the file left it: no window, whose camera and settings
     // could leave that.
@@ -152,172 +179,218 @@ int runRender(const CommandLine& commandLine)
     request.windowHeight = line.height;
     request.windowTitle = "raytracer - " + line.scene.filename().string();
     const auto setupStart = std::chrono::steady_clock::now();
-    auto context = platform::createContext(request);
+    setup.context = platform::createContext(request);
     settings::RenderSettings settings = line.settings;
     // The window's panel switches the environment off without a recompile.
-    settings.switchableEnvironment = context->hasWindow();
-    render::ProgressiveRenderer renderer(scene, line.width, line.height, settings);
+    settings.switchableEnvironment = setup.context->hasWindow();
+    setup.renderer = std::make_unique<render::ProgressiveRenderer>(setup.scene, line.width,
+                                                                   line.height, settings);
     // A window samples every pixel alike (InteractiveSession).
-    std::optional<ErrorTargetRun> errorTarget;
     if (line.targetError)
-        errorTarget.emplace(line.adaptiveSampling, !line.uniformSampling && !context->hasWindow());
-    int samplesResumed = 0;
-    int fewestResumed = 0;
-    if (resumed) {
-        renderer.resumeFrom(resumed->accumulation);
-        samplesResumed = renderer.samplesPerPixel();
-        fewestResumed = film::samplesTakenSpan(resumed->accumulation).fewest;
+        setup.errorTarget.emplace(line.adaptiveSampling,
+                                  !line.uniformSampling && !setup.context->hasWindow());
+    if (setup.resumed) {
+        setup.renderer->resumeFrom(setup.resumed->accumulation);
+        setup.samplesResumed = setup.renderer->samplesPerPixel();
+        setup.fewestResumed = film::samplesTakenSpan(setup.resumed->accumulation).fewest;
     }
-    const double setupSeconds = secondsSince(setupStart);
+    setup.setupSeconds = secondsSince(setupStart);
+    return setup;
+}
 
-    bool endedEarly = false;
-    double renderSeconds = 0.0;
-    if (context->hasWindow()) {
-        InteractiveSession session(static_cast<platform::GlfwWindowContext&>(*context), renderer,
-                                   scene, line, interrupt);
-        // A window closed before the end the command line set is an interrupted render.
-        endedEarly = !session.run() && line.isBatch();
-        renderSeconds = session.renderSeconds();
-        // The scene may have been edited and reloaded in the window.
-        sceneDigest = session.sceneSha256();
-    } else {
-        Progress progress(line.width, line.height, line.seconds, line.samplesPerPixel,
-                          !line.quiet, samplesResumed);
-        const auto renderStart = std::chrono::steady_clock::now();
-        auto keepGoing = [&] {
-            return !interrupt.requested() &&
-                   (!line.seconds || secondsSince(renderStart) < *line.seconds);
-        };
-        if (errorTarget)
-            errorTarget->start(renderer);
-        interaction::SamplesPerFrame pacing(line.settings.samplesPerFrame, line.samplesPerFrameGiven, 0.5,
-                               renderer.samplesAdaptively() ? kMostAdaptiveSamplesPerFrame : 16);
-        while (keepGoing()) {
-            if (errorTarget && (errorTarget->reached() || errorTarget->limitReached()))
-                break;
-            // Adaptive sampling limits each pixel to --spp itself (film/AdaptiveSampling.h).
-            const bool countsUniformSamples = !errorTarget || !errorTarget->adaptive();
-            if (countsUniformSamples && line.samplesPerPixel &&
-                renderer.samplesPerPixel() >= *line.samplesPerPixel)
-                break;
-            int samples = pacing.samples();
-            if (countsUniformSamples && line.samplesPerPixel)
-                samples = std::min(samples, *line.samplesPerPixel - renderer.samplesPerPixel());
-            if (!renderer.renderFrame(keepGoing, samples))
-                break;
-            if (errorTarget) {
-                errorTarget->afterFrame(renderer, secondsSince(renderStart));
-                progress.update(renderer.samplesPerPixel(), errorTarget->progressText());
-            } else {
-                progress.update(renderer.samplesPerPixel());
-            }
-            // Under adaptive sampling a frame lasts as long as its busiest pixels sample
-            // (ErrorTargetRun::mostSamplesAddedToAPixel), and a pixel behind the frames' count
-            // may take up to twice the samples asked (ProgressiveRenderer::drawFrame), as
-            // most pixels are there: the frame's cost per sample asked is the cost of those
-            // twice as many.
-            double secondsPerSample = renderer.lastSecondsPerSample();
-            if (errorTarget && errorTarget->adaptive() &&
-                errorTarget->mostSamplesAddedToAPixel() > 0.0f)
-                secondsPerSample *=
-                    std::max(1.0, 2.0 * samples / errorTarget->mostSamplesAddedToAPixel());
-            pacing.afterFrame(renderer.frames(), secondsPerSample,
-                              errorTarget ? errorTarget->predictedSecondsLeft() : std::nullopt);
+// The window: until it is closed or the command line's end is reached. The scene may be
+// edited and reloaded meanwhile: its digest is the one shown last.
+RenderRun runInWindow(RenderSetup& setup, const CommandLine& line, const InterruptWatch& interrupt)
+{
+    InteractiveSession session(static_cast<platform::GlfwWindowContext&>(*setup.context),
+                               *setup.renderer, setup.scene, line, interrupt);
+    RenderRun run;
+    // A window closed before the end the command line set is an interrupted render.
+    run.endedEarly = !session.run() && line.isBatch();
+    run.seconds = session.renderSeconds();
+    setup.sceneDigest = session.sceneSha256();
+    return run;
+}
+
+// Headless: frames until SECONDS, --spp, the target error or Ctrl-C, then exactly --spp
+// samples in every pixel where that was the end.
+RenderRun runBatch(RenderSetup& setup, const CommandLine& line, const InterruptWatch& interrupt)
+{
+    render::ProgressiveRenderer& renderer = *setup.renderer;
+    std::optional<ErrorTargetRun>& errorTarget = setup.errorTarget;
+    Progress progress(line.width, line.height, line.seconds, line.samplesPerPixel, !line.quiet,
+                      setup.samplesResumed);
+    const auto renderStart = std::chrono::steady_clock::now();
+    auto keepGoing = [&] {
+        return !interrupt.requested() &&
+               (!line.seconds || secondsSince(renderStart) < *line.seconds);
+    };
+    if (errorTarget)
+        errorTarget->start(renderer);
+    interaction::SamplesPerFrame pacing(
+        line.settings.samplesPerFrame, line.given("--samples-per-frame"), 0.5,
+        renderer.samplesAdaptively() ? kMostAdaptiveSamplesPerFrame : 16);
+    while (keepGoing()) {
+        if (errorTarget && (errorTarget->reached() || errorTarget->limitReached()))
+            break;
+        // Adaptive sampling limits each pixel to --spp itself (film/AdaptiveSampling.h).
+        const bool countsUniformSamples = !errorTarget || !errorTarget->adaptive();
+        if (countsUniformSamples && line.samplesPerPixel &&
+            renderer.samplesPerPixel() >= *line.samplesPerPixel)
+            break;
+        int samples = pacing.samples();
+        if (countsUniformSamples && line.samplesPerPixel)
+            samples = std::min(samples, *line.samplesPerPixel - renderer.samplesPerPixel());
+        if (!renderer.renderFrame(keepGoing, samples))
+            break;
+        if (errorTarget) {
+            errorTarget->afterFrame(renderer, secondsSince(renderStart));
+            progress.update(renderer.samplesPerPixel(), errorTarget->progressText());
+        } else {
+            progress.update(renderer.samplesPerPixel());
         }
-        // Exactly --spp samples in every pixel, also where a frame's loop budget left one
-        // short (ProgressiveRenderer::renderFrame), or an interrupted render resumed did.
-        if (line.samplesPerPixel && renderer.samplesPerPixel() >= *line.samplesPerPixel &&
-            !interrupt.requested() && !renderer.samplesAdaptively() &&
-            !(errorTarget && errorTarget->reached()))
-            renderer.completeSamples();
-        renderSeconds = secondsSince(renderStart);
-        progress.finish();
+        // Under adaptive sampling a frame lasts as long as its busiest pixels sample
+        // (ErrorTargetRun::mostSamplesAddedToAPixel), and a pixel behind the frames' count
+        // may take up to twice the samples asked (ProgressiveRenderer::drawFrame), as
+        // most pixels are there: the frame's cost per sample asked is the cost of those
+        // twice as many.
+        double secondsPerSample = renderer.lastSecondsPerSample();
+        if (errorTarget && errorTarget->adaptive() &&
+            errorTarget->mostSamplesAddedToAPixel() > 0.0f)
+            secondsPerSample *=
+                std::max(1.0, 2.0 * samples / errorTarget->mostSamplesAddedToAPixel());
+        pacing.afterFrame(renderer.frames(), secondsPerSample,
+                          errorTarget ? errorTarget->predictedSecondsLeft() : std::nullopt);
     }
-    // A render with an end (SECONDS or --spp) stopped before it by Ctrl-C or by closing its
-    // window is interrupted; a window without an end is meant to be closed.
-    const bool interrupted = interrupt.requested() || endedEarly;
-    const film::Accumulation accumulation = renderer.accumulation();
+    // Exactly --spp samples in every pixel, also where a frame's loop budget left one
+    // short (ProgressiveRenderer::renderFrame), or an interrupted render resumed did.
+    if (line.samplesPerPixel && renderer.samplesPerPixel() >= *line.samplesPerPixel &&
+        !interrupt.requested() && !renderer.samplesAdaptively() &&
+        !(errorTarget && errorTarget->reached()))
+        renderer.completeSamples();
+    RenderRun run;
+    run.seconds = secondsSince(renderStart);
+    progress.finish();
+    return run;
+}
+
+// "64x48, 8 spp in 0.07 s: ... (setup 0.45 s)"
+std::string summaryLine(const RenderSetup& setup, const film::Accumulation& accumulation,
+                        const RenderRun& run)
+{
+    const render::ProgressiveRenderer& renderer = *setup.renderer;
     std::string summary =
         renderer.samplesAdaptively()
             ? Progress::adaptiveSummary(renderer.width(), renderer.height(),
                                         film::samplesTakenSpan(accumulation),
-                                        film::samplesTakenInAll(accumulation), renderSeconds,
+                                        film::samplesTakenInAll(accumulation), run.seconds,
                                         renderer.discardedSamples())
             : Progress::summary(renderer.width(), renderer.height(), renderer.samplesPerPixel(),
-                                renderSeconds, renderer.discardedSamples(), samplesResumed);
-    char setup[64];
-    std::snprintf(setup, sizeof setup, " (setup %.2f s)", setupSeconds);
-    summary += setup;
+                                run.seconds, renderer.discardedSamples(), setup.samplesResumed);
+    char setupText[64];
+    std::snprintf(setupText, sizeof setupText, " (setup %.2f s)", setup.setupSeconds);
+    return summary + setupText;
+}
+
+// The picture and the statistics, with what the files say of themselves. The window's
+// picture is the one on screen, drawn once more and read back.
+void writeOutputs(RenderSetup& setup, const CommandLine& line, const film::Accumulation& accumulation,
+                  const RenderRun& run, bool interrupted)
+{
+    render::ProgressiveRenderer& renderer = *setup.renderer;
+    io::Image windowPicture;
+    bool fromWindow = false;
+    if (setup.context->hasWindow()) {
+        const platform::DrawableSize size = setup.context->windowFramebufferSize();
+        if (size.width == renderer.width() && size.height == renderer.height()) {
+            renderer.displayToWindow(size.width, size.height);
+            windowPicture = render::readWindowPixels(size.width, size.height);
+            fromWindow = true;
+        }
+    }
+    film::RenderMetadata metadata = describeRender(line.scene, setup.sceneDigest, renderer);
+    metadata.renderSeconds = run.seconds;
+    if (setup.resumed) {
+        // The new samples of each pixel take the indices from its count on: from the
+        // fewest any pixel held to the count all reach.
+        std::vector<film::SampleRange> ranges = setup.resumed->metadata.sampleRanges;
+        ranges.push_back({line.settings.seed, setup.fewestResumed,
+                          renderer.samplesPerPixel() - setup.fewestResumed});
+        metadata.sampleRanges = film::normalizedRanges(ranges);
+        metadata.renderSeconds += setup.resumed->metadata.renderSeconds;
+        metadata.mergedFrom = setup.resumed->metadata.mergedFrom;
+    }
+    if (interrupted)
+        metadata.interrupted = interruptionNote(line, renderer.samplesPerPixel(), run.seconds);
+    // Both images, or neither (io/OutputFiles.h).
+    io::writeAllOrNothing(renderOutputs(
+        {line.outputPath()}, line.statisticsOutput, accumulation, metadata,
+        [&] { return fromWindow ? windowPicture : renderer.toneMapped(); }));
+}
+
+// Writes what the render promised and prints its summary; returns the exit status.
+int finishRender(RenderSetup& setup, const CommandLine& line, const RenderRun& run,
+                 bool interrupted)
+{
+    render::ProgressiveRenderer& renderer = *setup.renderer;
+    const film::Accumulation accumulation = renderer.accumulation();
+    std::string summary = summaryLine(setup, accumulation, run);
 
     // An image without a sample is all black, and a resumed render without a new sample is
     // the file it resumed: neither is written, nor over an older file.
     const bool nothingNew =
-        resumed ? film::samplesTakenInAll(accumulation) <=
-                      film::samplesTakenInAll(resumed->accumulation)
-                : renderer.samplesPerPixel() == 0;
-    if (writesFile && nothingNew) {
+        setup.resumed ? film::samplesTakenInAll(accumulation) <=
+                            film::samplesTakenInAll(setup.resumed->accumulation)
+                      : renderer.samplesPerPixel() == 0;
+    if (setup.writesFile && nothingNew) {
+        const char* newSample = setup.resumed ? "new " : "";
         if (!interrupted) {
             char reason[160];
             std::snprintf(reason, sizeof reason,
                           "the render's %.3g s ended before its first %ssample was complete: "
                           "nothing written (give more SECONDS)",
-                          renderSeconds, resumed ? "new " : "");
+                          run.seconds, newSample);
             throw std::runtime_error(reason);
         }
         std::error_code error;
         const bool older = std::filesystem::exists(line.outputPath(), error);
-        std::cout << summary << " (interrupted before the first " << (resumed ? "new " : "")
+        std::cout << summary << " (interrupted before the first " << newSample
                   << "sample: nothing written"
                   << (older ? ", " + line.outputPath().string() + " left as it was" : "")
                   << ")" << std::endl;
         return kExitInterrupted;
     }
 
-    if (writesFile) {
-        io::Image windowPicture;
-        bool fromWindow = false;
-        if (context->hasWindow()) {
-            // The picture the window shows is the one written: draw it once more and read it
-            // back before it is presented.
-            const platform::DrawableSize size = context->windowFramebufferSize();
-            if (size.width == renderer.width() && size.height == renderer.height()) {
-                renderer.displayToWindow(size.width, size.height);
-                windowPicture = render::readWindowPixels(size.width, size.height);
-                fromWindow = true;
-            }
-        }
-        film::RenderMetadata metadata = describeRender(line.scene, sceneDigest, renderer);
-        metadata.renderSeconds = renderSeconds;
-        if (resumed) {
-            // The new samples of each pixel take the indices from its count on: from the
-            // fewest any pixel held to the count all reach.
-            std::vector<film::SampleRange> ranges = resumed->metadata.sampleRanges;
-            ranges.push_back({line.settings.seed, fewestResumed,
-                              renderer.samplesPerPixel() - fewestResumed});
-            metadata.sampleRanges = film::normalizedRanges(ranges);
-            metadata.renderSeconds += resumed->metadata.renderSeconds;
-            metadata.mergedFrom = resumed->metadata.mergedFrom;
-        }
-        if (interrupted)
-            metadata.interrupted =
-                interruptionNote(line, renderer.samplesPerPixel(), renderSeconds);
-        // Both images, or neither (io/OutputFiles.h).
-        io::writeAllOrNothing(renderOutputs(
-            {line.outputPath()}, line.statisticsOutput, accumulation, metadata,
-            [&] { return fromWindow ? windowPicture : renderer.toneMapped(); }));
+    if (setup.writesFile) {
+        writeOutputs(setup, line, accumulation, run, interrupted);
         summary += " -> " + line.outputPath().string();
         if (line.statisticsOutput)
             summary += " and " + line.statisticsOutput->string();
     }
-
     if (interrupted)
         summary += " (interrupted)";
-    if (errorTarget) {
-        errorTarget->conclude(renderer);
-        summary += "; " + errorTarget->summaryText(targetStop(line, *errorTarget, interrupted));
+    if (setup.errorTarget) {
+        setup.errorTarget->conclude(renderer);
+        summary += "; " + setup.errorTarget->summaryText(
+                              targetStop(line, *setup.errorTarget, interrupted));
     }
     std::cout << summary << std::endl;
     return interrupted ? kExitInterrupted : kExitSuccess;
+}
+
+}  // namespace
+
+int runRender(const CommandLine& commandLine)
+{
+    // From the start: Ctrl-C while the shader compiles must not kill the program unseen.
+    InterruptWatch interrupt;
+    CommandLine line = commandLine;
+    RenderSetup setup = prepareRender(line);
+    const RenderRun run = setup.context->hasWindow() ? runInWindow(setup, line, interrupt)
+                                                     : runBatch(setup, line, interrupt);
+    // A render with an end (SECONDS or --spp) stopped before it by Ctrl-C or by closing its
+    // window is interrupted; a window without an end is meant to be closed.
+    return finishRender(setup, line, run, interrupt.requested() || run.endedEarly);
 }
 
 int printFeatures(const CommandLine& line)

@@ -14,26 +14,9 @@ namespace {
 
 const std::string kPrefix = "raytracer:";
 
-// The shortest decimal that reads back as the same float (nine significant digits always
-// do): 1.2, not 1.20000005.
 std::string floatText(float value)
 {
-    char text[32];
-    for (int digits = 6; digits <= 9; ++digits) {
-        std::snprintf(text, sizeof text, "%.*g", digits, static_cast<double>(value));
-        if (std::strtof(text, nullptr) == value)
-            break;
-    }
-    return text;
-}
-
-bool readFloat(const std::string& text, float& value)
-{
-    if (text.empty())
-        return false;
-    char* end = nullptr;
-    value = std::strtof(text.c_str(), &end);
-    return end == text.c_str() + text.size() && std::isfinite(value);
+    return settings::shortestFloatText(value);
 }
 
 bool readInteger(const std::string& text, int& value)
@@ -43,94 +26,15 @@ bool readInteger(const std::string& text, int& value)
     return !text.empty() && error == std::errc() && end == last;
 }
 
-std::string onOff(bool on)
-{
-    return on ? "on" : "off";
-}
-
-bool readOnOff(const std::string& text, bool& value)
-{
-    if (text != "on" && text != "off")
-        return false;
-    value = text == "on";
-    return true;
-}
-
 }  // namespace
 
-const std::vector<ImageSetting>& imageSettings()
+std::vector<const settings::SettingRow*> imageSettings()
 {
-    // Left out, because they change the time a render takes and not its image: the seed
-    // (the sample ranges hold it), samples per frame and band seconds (a pixel's samples do
-    // not depend on how frames cut them), ray culling (exact: it skips only what a ray cannot
-    // meet) and the profiling counters (they replace the image).
-    static const std::vector<ImageSetting> settings = {
-        {"hitTolerance", "hit tolerance (pixel footprints)", "--hit-tolerance",
-         [](const settings::RenderSettings& s) { return floatText(s.hitTolerance); },
-         [](settings::RenderSettings& s, const std::string& t) { return readFloat(t, s.hitTolerance); }},
-        {"maxSteps", "sphere-tracing step limit", "--max-steps",
-         [](const settings::RenderSettings& s) { return std::to_string(s.maxMarchSteps); },
-         [](settings::RenderSettings& s, const std::string& t) { return readInteger(t, s.maxMarchSteps); }},
-        {"overRelaxation", "over-relaxation", "--over-relaxation",
-         [](const settings::RenderSettings& s) { return floatText(s.overRelaxation); },
-         [](settings::RenderSettings& s, const std::string& t) { return readFloat(t, s.overRelaxation); }},
-        {"stepScale", "step scale", "--step-scale",
-         [](const settings::RenderSettings& s) { return floatText(s.stepScale); },
-         [](settings::RenderSettings& s, const std::string& t) { return readFloat(t, s.stepScale); }},
-        {"maxBounces", "bounces", "--max-bounces",
-         [](const settings::RenderSettings& s) { return std::to_string(s.maxBounces); },
-         [](settings::RenderSettings& s, const std::string& t) { return readInteger(t, s.maxBounces); }},
-        {"rrDepth", "bounces before Russian roulette", "--rr-depth",
-         [](const settings::RenderSettings& s) { return std::to_string(s.russianRouletteDepth); },
-         [](settings::RenderSettings& s, const std::string& t) {
-             return readInteger(t, s.russianRouletteDepth);
-         }},
-        {"mis", "multiple importance sampling", "--no-mis",
-         [](const settings::RenderSettings& s) { return onOff(s.multipleImportanceSampling); },
-         [](settings::RenderSettings& s, const std::string& t) {
-             return readOnOff(t, s.multipleImportanceSampling);
-         }},
-        {"fresnel", "dielectric Fresnel", "--fresnel",
-         [](const settings::RenderSettings& s) {
-             return std::string(s.dielectricFresnel == settings::FresnelModel::Exact ? "exact" : "schlick");
-         },
-         [](settings::RenderSettings& s, const std::string& t) {
-             if (t != "exact" && t != "schlick")
-                 return false;
-             s.dielectricFresnel = t == "exact" ? settings::FresnelModel::Exact : settings::FresnelModel::Schlick;
-             return true;
-         }},
-        {"sampler", "sampler", "--sampler",
-         [](const settings::RenderSettings& s) {
-             return std::string(s.sampler == settings::SamplerKind::Sobol ? "sobol" : "independent");
-         },
-         [](settings::RenderSettings& s, const std::string& t) {
-             if (t != "sobol" && t != "independent")
-                 return false;
-             s.sampler = t == "sobol" ? settings::SamplerKind::Sobol : settings::SamplerKind::Independent;
-             return true;
-         }},
-        {"exactGeometry", "exact geometry", "--exact-geometry",
-         [](const settings::RenderSettings& s) { return onOff(s.exactGeometry); },
-         [](settings::RenderSettings& s, const std::string& t) { return readOnOff(t, s.exactGeometry); }},
-        // The general shader converges to the same image, but by other float operations:
-        // its samples are kept apart all the same.
-        {"shader", "shader", "--no-specialize",
-         [](const settings::RenderSettings& s) {
-             return std::string(s.variant == settings::ShaderVariant::General ? "general" : "specialized");
-         },
-         [](settings::RenderSettings& s, const std::string& t) {
-             if (t != "general" && t != "specialized")
-                 return false;
-             s.variant = t == "general" ? settings::ShaderVariant::General : settings::ShaderVariant::Specialized;
-             return true;
-         }},
-        // Switched off only in the window's panel.
-        {"environment", "environment light", "the window's panel",
-         [](const settings::RenderSettings& s) { return onOff(s.environmentLight); },
-         [](settings::RenderSettings& s, const std::string& t) { return readOnOff(t, s.environmentLight); }},
-    };
-    return settings;
+    std::vector<const settings::SettingRow*> recorded;
+    for (const settings::SettingRow& row : settings::settingRows())
+        if (row.isRecorded())
+            recorded.push_back(&row);
+    return recorded;
 }
 
 std::string formatCamera(const scene::Camera& camera)
@@ -149,7 +53,7 @@ bool parseCamera(const std::string& text, scene::Camera& camera)
     std::istringstream words(text);
     std::string word;
     auto expect = [&](const char* name) { return words >> word && word == name; };
-    auto number = [&](float& value) { return words >> word && readFloat(word, value); };
+    auto number = [&](float& value) { return words >> word && settings::readFloat(word, value); };
     auto vector = [&](glm::vec3& v) { return number(v.x) && number(v.y) && number(v.z); };
     return expect("eye") && vector(camera.eye) && expect("target") && vector(camera.target) &&
            expect("up") && vector(camera.up) && expect("fovy") &&
@@ -179,8 +83,9 @@ std::vector<io::ImageAttribute> metadataAttributes(const RenderMetadata& metadat
     char seconds[32];
     std::snprintf(seconds, sizeof seconds, "%.3f", metadata.renderSeconds);
     attributes.push_back({kPrefix + "renderSeconds", seconds});
-    for (const ImageSetting& setting : imageSettings())
-        attributes.push_back({kPrefix + setting.key, setting.text(metadata.settings)});
+    for (const settings::SettingRow* setting : imageSettings())
+        attributes.push_back(
+            {kPrefix + setting->description.metadataKey, setting->format(metadata.settings)});
     attributes.push_back({kPrefix + "program", metadata.program});
     if (!metadata.gitCommit.empty())
         attributes.push_back({kPrefix + "gitCommit", metadata.gitCommit});
@@ -233,10 +138,12 @@ std::optional<RenderMetadata> metadataFromAttributes(
     metadata.renderSeconds = std::strtod(seconds.c_str(), &end);
     if (seconds.empty() || end != seconds.c_str() + seconds.size())
         throw malformed("renderSeconds", "is not a number");
-    for (const ImageSetting& setting : imageSettings())
-        if (!setting.read(metadata.settings, required(setting.key)))
-            throw malformed(setting.key, "has the value '" + values[setting.key] +
-                                             "', which is not one of " + setting.option);
+    for (const settings::SettingRow* setting : imageSettings()) {
+        const std::string& key = setting->description.metadataKey;
+        if (!setting->read(metadata.settings, required(key)))
+            throw malformed(key, "has the value '" + values[key] + "', which is not one of " +
+                                     setting->setBy());
+    }
     metadata.program = required("program");
     metadata.gitCommit = values["gitCommit"];
     metadata.interrupted = values["interrupted"];
@@ -261,11 +168,12 @@ std::optional<MetadataDifference> imageDifference(const RenderMetadata& first,
     if (formatCamera(first.camera) != formatCamera(second.camera))
         return MetadataDifference{"the camera", formatCamera(first.camera),
                                   formatCamera(second.camera)};
-    for (const ImageSetting& setting : imageSettings()) {
-        const std::string a = setting.text(first.settings);
-        const std::string b = setting.text(second.settings);
+    for (const settings::SettingRow* setting : imageSettings()) {
+        const std::string a = setting->format(first.settings);
+        const std::string b = setting->format(second.settings);
         if (a != b)
-            return MetadataDifference{std::string(setting.label) + " (" + setting.option + ")", a, b};
+            return MetadataDifference{
+                setting->description.metadataLabel + " (" + setting->setBy() + ")", a, b};
     }
     // Another build may trace other paths (a changed shader) for the same sample index.
     if (first.program != second.program || first.gitCommit != second.gitCommit)

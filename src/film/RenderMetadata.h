@@ -4,7 +4,7 @@
 // holds. It is what lets `raytracer info` describe a file, and merge and resume refuse
 // samples that do not estimate one image.
 #include "io/ImageFile.h"
-#include "settings/RenderSettings.h"
+#include "settings/SettingsTable.h"
 #include "film/SampleRanges.h"
 #include "scene/Scene.h"
 
@@ -40,18 +40,11 @@ struct RenderMetadata {
     std::vector<std::string> mergedFrom;
 };
 
-// A setting that changes the image: renders that differ in one estimate different images,
-// so their samples never mix. Each is described once here; the attribute, the check and
-// `raytracer info`'s line all come from this table.
-struct ImageSetting {
-    const char* key;     // attribute "raytracer:" + key
-    const char* label;   // for people
-    const char* option;  // the command-line option that sets it
-    std::string (*text)(const settings::RenderSettings& settings);
-    // False when `text` is not a value of this setting.
-    bool (*read)(settings::RenderSettings& settings, const std::string& text);
-};
-const std::vector<ImageSetting>& imageSettings();
+// The settings that change the image (settings/Options.def's rows with .metadata): renders
+// that differ in one estimate different images, so their samples never mix. Each is recorded
+// as attribute "raytracer:" + key, in the table's order; the check and `raytracer info`'s
+// lines come from the same rows.
+std::vector<const settings::SettingRow*> imageSettings();
 
 // "eye 0 1 5 target 0 0 0 up 0 1 0 fovy 45": exact (floats round-trip), for the header.
 std::string formatCamera(const scene::Camera& camera);

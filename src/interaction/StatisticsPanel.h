@@ -1,5 +1,7 @@
 #pragma once
+#include "film/ToneCurve.h"
 #include "interaction/ConvergenceHistory.h"
+#include "settings/RenderSettings.h"
 
 #include <optional>
 #include <string>
@@ -28,12 +30,13 @@ struct PanelReadings {
     bool statusIsError = false;
 };
 
-// What a user tunes while watching. All of it is uniforms: nothing recompiles.
+// What a user tunes while watching. All of it is uniforms: nothing recompiles. The session
+// starts it from the renderer's settings.
 struct PanelSettings {
-    float exposure = 4.0f;
-    float hitTolerance = 0.25f;
-    int maxBounces = 16;
-    bool environment = true;
+    float exposure = film::ToneCurve::kDefaultExposure;
+    float hitTolerance = settings::RenderSettings{}.hitTolerance;
+    int maxBounces = settings::RenderSettings{}.maxBounces;
+    bool environment = settings::RenderSettings{}.environmentLight;
 
     bool operator==(const PanelSettings& other) const;
     bool operator!=(const PanelSettings& other) const { return !(*this == other); }

@@ -1,8 +1,12 @@
 #include "render/PathTracerProgram.h"
 
+#include "render/SceneUniforms.h"
 #include "shadergen/KindDispatchers.h"
+#include "shadergen/UniformBlock.h"
 
 #include <chrono>
+#include <utility>
+#include <vector>
 
 namespace render {
 
@@ -24,12 +28,22 @@ gl::Program compileAndTime(const std::string& vertex, const shadergen::ShaderSou
 
 }  // namespace
 
-shadergen::ShaderSource assemblePathTracerSource(const shadergen::SceneShaderCode& code, const fs::path& shaderDirectory)
+shadergen::ShaderSource assemblePathTracerSource(const shadergen::SceneShaderCode& code,
+                                                 const fs::path& shaderDirectory)
 {
     const fs::path modules = shaderDirectory / "modules";
-    shadergen::ShaderSource source;
-    source.add("<preamble: features of the scene>", kVersion + code.defines);
-    auto module = [&](const char* name) { source.addFile(modules / name, shaderDirectory); };
+    // The pieces after the preamble and the uniforms, in order; the uniforms are written
+    // for the modules among them.
+    std::vector<std::pair<std::string, std::string>> pieces;
+    std::vector<std::string> moduleNames;
+    auto module = [&](const char* name) {
+        moduleNames.push_back(name);
+        pieces.emplace_back("", (modules / name).string());
+    };
+    auto file = [&](const fs::path& path) { pieces.emplace_back("", path.string()); };
+    auto generated = [&](std::string name, std::string text) {
+        pieces.emplace_back(std::move(name), std::move(text));
+    };
 
     const bool specialized = shadergen::specializesShapes(code.variant);
     module("constants.glsl");
@@ -46,24 +60,25 @@ shadergen::ShaderSource assemblePathTracerSource(const shadergen::SceneShaderCod
         module("shape_transforms.glsl");
     if (!code.userSdfFiles.empty()) {
         module("user_sdf_api.glsl");
-        for (const fs::path& file : code.userSdfFiles)
-            source.addFile(file, shaderDirectory);
+        for (const fs::path& userFile : code.userSdfFiles)
+            file(userFile);
     }
-    source.add(specialized ? "<generated: the scene's distance functions>"
-                           : "<generated: user SDF dispatch>",
-               code.sceneFunctions);
+    generated(specialized ? "<generated: the scene's distance functions>"
+                          : "<generated: user SDF dispatch>",
+              code.sceneFunctions);
     if (!specialized)
         module("shape_interpreter.glsl");
     module("sphere_tracing.glsl");
     module("camera.glsl");
     module("fresnel.glsl");
     module("pigments.glsl");
-    source.add("<generated: pigmentColor over the pigment kinds>", shadergen::pigmentDispatcher());
+    generated("<generated: pigmentColor over the pigment kinds>", shadergen::pigmentDispatcher());
     module("materials.glsl");
-    source.add("<generated: the BSDF dispatchers over the materials>", shadergen::materialDispatchers());
+    generated("<generated: the BSDF dispatchers over the materials>",
+              shadergen::materialDispatchers());
     module("ray_queries.glsl");
     if (code.exactGeometry) {
-        source.add("<generated: the scene's exact intersections>", code.exactFunctions);
+        generated("<generated: the scene's exact intersections>", code.exactFunctions);
         module("ray_queries_exact.glsl");
     } else {
         module("ray_queries_traced.glsl");
@@ -72,6 +87,17 @@ shadergen::ShaderSource assemblePathTracerSource(const shadergen::SceneShaderCod
     module("environment.glsl");
     module("integrator.glsl");
     module("path_tracer_main.glsl");
+
+    shadergen::ShaderSource source;
+    source.add("<preamble: features of the scene>", kVersion + code.defines);
+    source.add("<generated: the uniforms, read once per pixel>",
+               shadergen::uniformBlock(pathTracerUniformDeclarations(), moduleNames));
+    for (const auto& [name, text] : pieces) {
+        if (name.empty())
+            source.addFile(text, shaderDirectory);
+        else
+            source.add(name, text);
+    }
     return source;
 }
 
@@ -80,8 +106,10 @@ std::string fullscreenVertexSource(const fs::path& shaderDirectory)
     return kVersion + shadergen::readTextFile(shaderDirectory / "modules" / "fullscreen.vert");
 }
 
-PathTracerProgram::PathTracerProgram(const shadergen::ShaderSource& fragment, const fs::path& shaderDirectory)
-    : program_(compileAndTime(fullscreenVertexSource(shaderDirectory), fragment, compileSeconds_))
+PathTracerProgram::PathTracerProgram(const shadergen::ShaderSource& fragment,
+                                     const fs::path& shaderDirectory)
+    : program_(compileAndTime(fullscreenVertexSource(shaderDirectory), fragment, compileSeconds_)),
+      uniforms_(program_, shadergen::declaredUniforms(fragment))
 {
 }
 

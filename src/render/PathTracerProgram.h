@@ -1,5 +1,6 @@
 #pragma once
 #include "gl/Shader.h"
+#include "render/ProgramUniforms.h"
 #include "shadergen/SceneShaderGenerator.h"
 #include "shadergen/ShaderSource.h"
 
@@ -21,15 +22,22 @@ std::string fullscreenVertexSource(const std::filesystem::path& shaderDirectory)
 class PathTracerProgram {
 public:
     // `fragment` as render/ScenePreparation assembles it.
-    PathTracerProgram(const shadergen::ShaderSource& fragment, const std::filesystem::path& shaderDirectory);
+    PathTracerProgram(const shadergen::ShaderSource& fragment,
+                      const std::filesystem::path& shaderDirectory);
+    // uniforms() refers to program_: the two stay together.
+    PathTracerProgram(const PathTracerProgram&) = delete;
+    PathTracerProgram& operator=(const PathTracerProgram&) = delete;
 
     const gl::Program& program() const { return program_; }
+    // Its uniforms, set by name and checked against the source's declarations.
+    ProgramUniforms& uniforms() { return uniforms_; }
     double compileSeconds() const { return compileSeconds_; }
 
 private:
     // Declared first: the program's initialiser measures into it.
     double compileSeconds_ = 0.0;
     gl::Program program_;
+    ProgramUniforms uniforms_;
 };
 
 }  // namespace render

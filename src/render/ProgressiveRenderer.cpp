@@ -12,6 +12,10 @@ namespace render {
 
 namespace {
 
+// The texture units the path tracer's samplers read.
+constexpr int kEstimateUnit = 0;
+constexpr int kMomentsUnit = 1;
+constexpr int kPigmentTexturesUnit = 3;
 constexpr int kTileSampleTargetsUnit = 4;
 
 double secondsSince(std::chrono::steady_clock::time_point start)
@@ -77,12 +81,13 @@ ProgressiveRenderer::ProgressiveRenderer(PreparedScene prepared, int width, int 
 void ProgressiveRenderer::generateDriverCode()
 {
     program_->program().use();
-    glUniform1i(program_->program().uniformLocation("uSamplesPerFrame"), 0);
-    glUniform1i(program_->program().uniformLocation("uSampleTarget"), 0);
-    glUniform1i(program_->program().uniformLocation("uTileSize"), 0);
-    targets_.previous().estimate.bind(0);
-    targets_.previous().moments.bind(1);
-    pigmentTextures_.texture.bind(3);
+    setDrawUniforms(0, 0, 0);
+    // Every uniform the shader declares is set by now: the scene's and the settings' by
+    // uploadAll, the draw's just above.
+    program_->uniforms().checkEveryDeclaredSet();
+    targets_.previous().estimate.bind(kEstimateUnit);
+    targets_.previous().moments.bind(kMomentsUnit);
+    pigmentTextures_.texture.bind(kPigmentTexturesUnit);
     targets_.next().framebuffer.bindForDrawing();
     glViewport(0, 0, width(), height());
     glEnable(GL_SCISSOR_TEST);
@@ -97,15 +102,26 @@ void ProgressiveRenderer::generateDriverCode()
 void ProgressiveRenderer::uploadAll()
 {
     program_->program().use();
-    uploadUniforms(program_->program(), uniforms_, code_, settings_, width(), height());
-    const gl::Program& program = program_->program();
-    glUniform1i(program.uniformLocation("uPreviousEstimate"), 0);
-    glUniform1i(program.uniformLocation("uPreviousMoments"), 1);
-    glUniform1i(program.uniformLocation("uPigmentTextures"), 3);
-    glUniform1i(program.uniformLocation("uTileSampleTargets"), kTileSampleTargetsUnit);
-    glUniform1f(program.uniformLocation("uPigmentTextureSize"),
-                static_cast<float>(pigmentTextures_.size));
+    ProgramUniforms& uniforms = program_->uniforms();
+    uploadUniforms(uniforms,
+                   {uniforms_, settings_, width(), height(),
+                    static_cast<float>(pigmentTextures_.size)},
+                   code_);
+    uniforms.set("uPreviousEstimate", kEstimateUnit);
+    uniforms.set("uPreviousMoments", kMomentsUnit);
+    uniforms.set("uPigmentTextures", kPigmentTexturesUnit);
+    uniforms.set("uTileSampleTargets", kTileSampleTargetsUnit);
     gl::throwOnGlError("uploading the scene");
+}
+
+// The uniforms each draw sets (path_tracer_main.glsl): paths per pixel, the count no pixel
+// passes (0: none), and the adaptive tiles' side (0: none).
+void ProgressiveRenderer::setDrawUniforms(int samplesPerFrame, int sampleTarget, int tileSize)
+{
+    ProgramUniforms& uniforms = program_->uniforms();
+    uniforms.set("uSamplesPerFrame", samplesPerFrame);
+    uniforms.set("uSampleTarget", sampleTarget);
+    uniforms.set("uTileSize", tileSize);
 }
 
 ReloadDecision ProgressiveRenderer::setScene(const scene::Scene& original,
@@ -221,19 +237,17 @@ void ProgressiveRenderer::renderPreview(int divisor, int maxBounces)
     const int previewHeight = coarseSide(height(), divisor);
     clearAccumulation();
 
-    const gl::Program& program = program_->program();
-    program.use();
+    program_->program().use();
+    ProgramUniforms& uniforms = program_->uniforms();
     // The camera spans the coarse grid, which fills the lower-left corner of the targets.
-    glUniform2f(program.uniformLocation("uImageSize"), static_cast<float>(previewWidth),
-                static_cast<float>(previewHeight));
-    glUniform1i(program.uniformLocation("uMaxBounces"), std::min(maxBounces, settings_.maxBounces));
-    glUniform1i(program.uniformLocation("uSamplesPerFrame"), 1);
-    glUniform1i(program.uniformLocation("uSampleTarget"), 0);
-    glUniform1i(program.uniformLocation("uTileSize"), 0);
+    uniforms.set("uImageSize", glm::vec2(static_cast<float>(previewWidth),
+                                         static_cast<float>(previewHeight)));
+    uniforms.set("uMaxBounces", std::min(maxBounces, settings_.maxBounces));
+    setDrawUniforms(1, 0, 0);
     const AccumulationTargets::Set& source = targets_.previous();
-    source.estimate.bind(0);
-    source.moments.bind(1);
-    pigmentTextures_.texture.bind(3);
+    source.estimate.bind(kEstimateUnit);
+    source.moments.bind(kMomentsUnit);
+    pigmentTextures_.texture.bind(kPigmentTexturesUnit);
     targets_.next().framebuffer.bindForDrawing();
     glViewport(0, 0, width(), height());
     glEnable(GL_SCISSOR_TEST);
@@ -241,9 +255,9 @@ void ProgressiveRenderer::renderPreview(int divisor, int maxBounces)
     triangle_.drawFullscreenTriangle();
     glDisable(GL_SCISSOR_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glUniform2f(program.uniformLocation("uImageSize"), static_cast<float>(width()),
-                static_cast<float>(height()));
-    glUniform1i(program.uniformLocation("uMaxBounces"), settings_.maxBounces);
+    uniforms.set("uImageSize",
+                 glm::vec2(static_cast<float>(width()), static_cast<float>(height())));
+    uniforms.set("uMaxBounces", settings_.maxBounces);
     gl::throwOnGlError("rendering a preview");
     targets_.swap();
     previewDivisor_ = divisor;
@@ -302,12 +316,10 @@ bool ProgressiveRenderer::drawFrame(const std::function<bool()>& keepGoing, int 
     const AccumulationTargets::Set& destination = targets_.next();
 
     program_->program().use();
-    glUniform1i(program_->program().uniformLocation("uSamplesPerFrame"), 2 * samples);
-    glUniform1i(program_->program().uniformLocation("uSampleTarget"), target);
-    glUniform1i(program_->program().uniformLocation("uTileSize"), tileSize_);
-    source.estimate.bind(0);
-    source.moments.bind(1);
-    pigmentTextures_.texture.bind(3);
+    setDrawUniforms(2 * samples, target, tileSize_);
+    source.estimate.bind(kEstimateUnit);
+    source.moments.bind(kMomentsUnit);
+    pigmentTextures_.texture.bind(kPigmentTexturesUnit);
     tileSampleTargets_.bind(kTileSampleTargetsUnit);
     destination.framebuffer.bindForDrawing();
     // The viewport stays the whole image so gl_FragCoord is the pixel; the scissor picks

@@ -128,6 +128,7 @@ private:
     ProgressiveRenderer(PreparedScene prepared, int width, int height,
                         const settings::RenderSettings& settings);
     void uploadAll();
+    void setDrawUniforms(int samplesPerFrame, int sampleTarget, int tileSize);
     void generateDriverCode();
     void restartAccumulation();
     bool drawFrame(const std::function<bool()>& keepGoing, int samples, int target);

@@ -1,8 +1,8 @@
 #include "render/SceneUniforms.h"
 
-#include "gl/Shader.h"
-
-#include <glm/gtc/type_ptr.hpp>
+#include "render/ProgramUniforms.h"
+#include "settings/SettingsTable.h"
+#include "shadergen/SceneRecords.h"
 
 #include <cmath>
 #include <map>
@@ -20,41 +20,69 @@ double average(const glm::dvec3& v)
     return (v.x + v.y + v.z) / 3.0;
 }
 
-template <typename Vector>
-void setArray(const gl::Program& program, const char* name, const std::vector<Vector>& values);
-
-template <>
-void setArray(const gl::Program& program, const char* name, const std::vector<glm::vec4>& values)
+// A row of sceneValueUniforms(): the GLSL type follows from what `value` returns.
+template <typename Value>
+SceneValueUniform sceneValue(const char* name, const char* module,
+                             Value (*value)(const UniformSources&))
 {
-    const GLint location = program.uniformLocation(name);
-    if (location >= 0 && !values.empty())
-        glUniform4fv(location, static_cast<GLsizei>(values.size()), glm::value_ptr(values[0]));
-}
-
-template <>
-void setArray(const gl::Program& program, const char* name, const std::vector<glm::ivec4>& values)
-{
-    const GLint location = program.uniformLocation(name);
-    if (location >= 0 && !values.empty())
-        glUniform4iv(location, static_cast<GLsizei>(values.size()), glm::value_ptr(values[0]));
-}
-
-void setFloat(const gl::Program& program, const char* name, float value)
-{
-    glUniform1f(program.uniformLocation(name), value);
-}
-
-void setInt(const gl::Program& program, const char* name, int value)
-{
-    glUniform1i(program.uniformLocation(name), value);
-}
-
-void setVec3(const gl::Program& program, const char* name, const glm::vec3& value)
-{
-    glUniform3fv(program.uniformLocation(name), 1, glm::value_ptr(value));
+    const std::string uniform = name;
+    return {{settings::glslTypeOf<Value>(), uniform, "g" + uniform.substr(1), module},
+            [value](const UniformSources& sources) -> settings::UniformValue {
+                return value(sources);
+            }};
 }
 
 }  // namespace
+
+const std::vector<SceneValueUniform>& sceneValueUniforms()
+{
+    using S = const UniformSources&;
+    static const std::vector<SceneValueUniform> table = {
+        // The scene's bounds: what a hit's distance and a ray's end are measured against.
+        sceneValue<float>("uMinimumHitDistance", "sphere_tracing.glsl",
+                          [](S s) { return s.scene.bounds.minimumHitDistance(); }),
+        sceneValue<float>("uFarDistance", "sphere_tracing.glsl",
+                          [](S s) { return s.scene.bounds.farDistance(); }),
+        // The camera's orthonormal frame (camera.glsl).
+        sceneValue<glm::vec3>("uCameraEye", "camera.glsl", [](S s) { return s.scene.cameraEye; }),
+        sceneValue<glm::vec3>("uCameraRight", "camera.glsl",
+                              [](S s) { return s.scene.cameraFrame.right; }),
+        sceneValue<glm::vec3>("uCameraUp", "camera.glsl",
+                              [](S s) { return s.scene.cameraFrame.trueUp; }),
+        sceneValue<glm::vec3>("uCameraForward", "camera.glsl",
+                              [](S s) { return s.scene.cameraFrame.forward; }),
+        sceneValue<float>("uTanHalfFovy", "camera.glsl", [](S s) { return s.scene.tanHalfFovy; }),
+        sceneValue<glm::vec2>("uImageSize", "camera.glsl", [](S s) {
+            return glm::vec2(static_cast<float>(s.width), static_cast<float>(s.height));
+        }),
+        sceneValue<float>("uPigmentTextureSize", "pigments.glsl",
+                          [](S s) { return s.pigmentTextureSize; }),
+        // The general shader, and the window's, read the environment's kind here (the panel
+        // switches it off without a recompile); a specialised one builds it in.
+        sceneValue<int>("uEnvironmentKind", "environment.glsl",
+                        [](S s) {
+                            return describe(s.settings.environmentLight ? s.scene.environment.kind
+                                                                        : EnvironmentKind::None)
+                                .code;
+                        }),
+        sceneValue<glm::vec3>("uEnvironmentColor", "environment.glsl",
+                              [](S s) { return s.scene.environment.color; }),
+        // The culling bits of every sphere light that has one: rays leave those out of their
+        // marches and intersect the spheres exactly instead (ray_queries_traced.glsl).
+        sceneValue<unsigned int>("uSphereLightPieces", "scene_data.glsl",
+                                 [](S s) { return s.scene.sphereLightPieces; }),
+    };
+    return table;
+}
+
+std::vector<shadergen::UniformDeclaration> pathTracerUniformDeclarations()
+{
+    std::vector<shadergen::UniformDeclaration> declarations =
+        shadergen::settingUniformDeclarations();
+    for (const SceneValueUniform& row : sceneValueUniforms())
+        declarations.push_back(row.declaration);
+    return declarations;
+}
 
 // In double: the power of a bright, large sphere light (radiance near the float maximum)
 // overflows float, and one infinite power would make every selection probability NaN.
@@ -101,16 +129,22 @@ SceneUniforms packSceneUniforms(const Scene& scene, const shadergen::SceneShader
             }
             layer = static_cast<float>(found->second);
         }
-        packed.pigments.emplace_back(static_cast<float>(describe(pigment.kind).code), pigment.size,
-                                     layer, 0.0f);
-        packed.pigments.emplace_back(pigment.color, 0.0f);
-        packed.pigments.emplace_back(pigment.secondColor, 0.0f);
+        shadergen::PigmentRecord record;
+        record.kind = describe(pigment.kind).code;
+        record.size = pigment.size;
+        record.textureLayer = layer;
+        record.firstColor = pigment.color;
+        record.secondColor = pigment.secondColor;
+        shadergen::packRecord(shadergen::pigmentRecordLayout(), record, packed.pigments);
     }
 
     for (const Finish& finish : scene.finishes) {
-        packed.finishes.emplace_back(finish.emission, finish.phongExponent);
-        packed.finishes.emplace_back(static_cast<float>(describe(finish.material()).code),
-                                     finish.ior, 0.0f, 0.0f);
+        shadergen::FinishRecord record;
+        record.emission = finish.emission;
+        record.phongExponent = finish.phongExponent;
+        record.material = describe(finish.material()).code;
+        record.ior = finish.ior;
+        shadergen::packRecord(shadergen::finishRecordLayout(), record, packed.finishes);
     }
 
     const std::vector<SphereLight> spheres = sphereLights(scene);
@@ -121,36 +155,42 @@ SceneUniforms packSceneUniforms(const Scene& scene, const shadergen::SceneShader
     std::vector<int> lightOfObject(scene.objects.size(), -1);
     double cumulativeProbability = 0.0;
     for (std::size_t i = 0; i < powers.size(); ++i) {
-        const float probability =
+        shadergen::LightRecord record;
+        record.selectionProbability =
             totalPower > 0.0 ? static_cast<float>(powers[i] / totalPower) : 0.0f;
         cumulativeProbability += totalPower > 0.0 ? powers[i] / totalPower : 0.0;
         // The last light closes the table exactly at 1 whatever the rounding.
-        const float cdf =
+        record.cumulativeProbability =
             i + 1 == powers.size() ? 1.0f : static_cast<float>(cumulativeProbability);
         if (i < scene.pointLights.size()) {
             const PointLight& light = scene.pointLights[i];
-            packed.lights.emplace_back(light.position, 0.0f);
-            packed.lights.emplace_back(light.intensity, probability);
-            packed.lights.emplace_back(cdf, -1.0f, 0.0f, 0.0f);
+            record.position = light.position;
+            record.emission = light.intensity;
         } else {
             const SphereLight& light = spheres[i - scene.pointLights.size()];
             lightOfObject[light.object] = static_cast<int>(i);
-            packed.lights.emplace_back(light.center, light.radius);
-            packed.lights.emplace_back(light.radiance, probability);
-            const std::uint32_t bit = static_cast<std::size_t>(light.object) <
-                                              code.objectCullingBits.size()
-                                          ? code.objectCullingBits[light.object]
-                                          : 0u;
-            packed.lights.emplace_back(cdf, static_cast<float>(light.object),
-                                       static_cast<float>(bit), 0.0f);
-            packed.sphereLightPieces |= bit;
+            record.position = light.center;
+            record.radius = light.radius;
+            record.emission = light.radiance;
+            record.object = light.object;
+            record.cullingBit = static_cast<std::size_t>(light.object) <
+                                        code.objectCullingBits.size()
+                                    ? code.objectCullingBits[light.object]
+                                    : 0u;
+            packed.sphereLightPieces |= record.cullingBit;
         }
+        shadergen::packRecord(shadergen::lightRecordLayout(), record, packed.lights);
     }
 
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
-        const int programStart = i < code.objectProgramStart.size() ? code.objectProgramStart[i] : 0;
-        packed.objects.emplace_back(object.pigment, object.finish, lightOfObject[i], programStart);
+        shadergen::ObjectRecord record;
+        record.pigment = object.pigment;
+        record.finish = object.finish;
+        record.sphereLight = lightOfObject[i];
+        record.shapeProgramStart =
+            i < code.objectProgramStart.size() ? code.objectProgramStart[i] : 0;
+        shadergen::packRecord(shadergen::objectRecordLayout(), record, packed.objects);
     }
 
     packed.cameraFrame = cameraFrame(scene.camera);
@@ -162,46 +202,29 @@ SceneUniforms packSceneUniforms(const Scene& scene, const shadergen::SceneShader
     return packed;
 }
 
-void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
-                    const shadergen::SceneShaderCode& code, const settings::RenderSettings& settings, int width,
-                    int height)
+void uploadUniforms(ProgramUniforms& program, const UniformSources& sources,
+                    const shadergen::SceneShaderCode& code)
 {
-    setArray(program, "uShapeParameters", code.shapeParameters);
-    setArray(program, "uShapeProgram", code.shapeProgram);
-    setArray(program, "uObjectBounds", code.objectBounds);
-    setArray(program, "uObjects", uniforms.objects);
-    setArray(program, "uPigments", uniforms.pigments);
-    setArray(program, "uFinishes", uniforms.finishes);
-    setArray(program, "uLights", uniforms.lights);
+    program.setArray("uShapeParameters", code.shapeParameters);
+    if (!shadergen::specializesShapes(code.variant)) {
+        // The interpreter's programs (shape_interpreter.glsl).
+        program.setArray("uShapeProgram", code.shapeProgram);
+        program.setArray("uObjectBounds", code.objectBounds);
+    }
+    program.setArray(shadergen::objectRecordLayout().uniform, sources.scene.objects);
+    program.setArray(shadergen::pigmentRecordLayout().uniform, sources.scene.pigments);
+    program.setArray(shadergen::finishRecordLayout().uniform, sources.scene.finishes);
+    program.setArray(shadergen::lightRecordLayout().uniform, sources.scene.lights);
 
-    setVec3(program, "uCameraEye", uniforms.cameraEye);
-    setVec3(program, "uCameraRight", uniforms.cameraFrame.right);
-    setVec3(program, "uCameraUp", uniforms.cameraFrame.trueUp);
-    setVec3(program, "uCameraForward", uniforms.cameraFrame.forward);
-    setFloat(program, "uTanHalfFovy", uniforms.tanHalfFovy);
-    glUniform2f(program.uniformLocation("uImageSize"), static_cast<float>(width),
-                static_cast<float>(height));
-
-    setInt(program, "uEnvironmentKind",
-           describe(settings.environmentLight ? uniforms.environment.kind : EnvironmentKind::None)
-               .code);
-    setVec3(program, "uEnvironmentColor", uniforms.environment.color);
-
-    setFloat(program, "uMinimumHitDistance", uniforms.bounds.minimumHitDistance());
-    setFloat(program, "uFarDistance", uniforms.bounds.farDistance());
-    setFloat(program, "uHitTolerance", settings.hitTolerance);
-    setInt(program, "uMaxMarchSteps", settings.maxMarchSteps);
-    setFloat(program, "uOverRelaxation", settings.overRelaxation);
-    setFloat(program, "uStepScale", settings.stepScale);
-    setInt(program, "uMaxBounces", settings.maxBounces);
-    setInt(program, "uRussianRouletteDepth", settings.russianRouletteDepth);
-    setInt(program, "uUseMis", settings.multipleImportanceSampling ? 1 : 0);
-    setInt(program, "uRayCulling", settings.rayCulling ? 1 : 0);
-    setInt(program, "uExactFresnel", settings.dielectricFresnel == settings::FresnelModel::Exact ? 1 : 0);
-    setInt(program, "uSampler", settings.sampler == settings::SamplerKind::Sobol ? 1 : 0);
-    glUniform1ui(program.uniformLocation("uSphereLightPieces"), uniforms.sphereLightPieces);
-    glUniform2ui(program.uniformLocation("uSeed"), static_cast<GLuint>(settings.seed),
-                 static_cast<GLuint>(settings.seed >> 32));
+    // The values, where the shader has the module that reads them.
+    for (const settings::SettingRow& row : settings::settingRows()) {
+        const std::string name = settings::uniformName(row.field);
+        if (row.isUniform() && program.declares(name))
+            program.set(name, row.uniform(sources.settings));
+    }
+    for (const SceneValueUniform& row : sceneValueUniforms())
+        if (program.declares(row.declaration.name))
+            program.set(row.declaration.name, row.value(sources));
 }
 
 }  // namespace render

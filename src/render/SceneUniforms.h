@@ -1,6 +1,8 @@
 #pragma once
+#include "settings/OptionValues.h"
 #include "settings/RenderSettings.h"
 #include "shadergen/SceneShaderGenerator.h"
+#include "shadergen/UniformBlock.h"
 #include "scene/Scene.h"
 #include "scene/SceneBounds.h"
 
@@ -8,16 +10,15 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <vector>
-
-namespace gl {
-class Program;
-}
 
 namespace render {
 
-// The scene's numbers laid out as the shader's uniform arrays (shaders/modules/scene_data.glsl
-// documents each record). Built from the scene on the CPU; uploaded without recompiling.
+class ProgramUniforms;
+
+// The scene's numbers laid out as the shader's uniform arrays (the records' layouts are
+// shadergen/SceneRecords.h's). Built from the scene on the CPU; uploaded without recompiling.
 struct SceneUniforms {
     std::vector<glm::ivec4> objects;
     std::vector<glm::vec4> pigments;
@@ -45,9 +46,30 @@ SceneUniforms packSceneUniforms(const scene::Scene& scene, const shadergen::Scen
 // light, 4 pi^2 r^2 L for a sphere of radiance L (channels averaged).
 std::vector<double> lightPowers(const scene::Scene& scene);
 
-// Sets every scene and settings uniform of `program` (which must be in use).
-void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
-                    const shadergen::SceneShaderCode& code, const settings::RenderSettings& settings, int width,
-                    int height);
+// What the uniforms' values come from.
+struct UniformSources {
+    const SceneUniforms& scene;
+    const settings::RenderSettings& settings;
+    int width = 0;
+    int height = 0;
+    float pigmentTextureSize = 0.0f;  // texels along the larger side of a texture layer
+};
+
+// A value of the scene's (or of the image's) that the shader reads as a uniform: its
+// declaration and where its value comes from.
+struct SceneValueUniform {
+    shadergen::UniformDeclaration declaration;
+    std::function<settings::UniformValue(const UniformSources&)> value;
+};
+const std::vector<SceneValueUniform>& sceneValueUniforms();
+
+// Every uniform the generated block declares that is not an array: the settings' and the
+// scene's values.
+std::vector<shadergen::UniformDeclaration> pathTracerUniformDeclarations();
+
+// Sets every scene and settings uniform the program declares (it must be in use): the
+// arrays, the records and every value above.
+void uploadUniforms(ProgramUniforms& program, const UniformSources& sources,
+                    const shadergen::SceneShaderCode& code);
 
 }  // namespace render

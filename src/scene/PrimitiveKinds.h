@@ -16,6 +16,22 @@ struct PrimitiveKind {
     int parameterCount;     // vec4s; a union of terms has one per term
     bool unionOfTerms;      // the distance is the minimum of `distance` over every vec4
     Geometry (*read)(TokenCursor& in);
+
+    // Exact intersection (scene/Primitives.h says what each member means); null `exact`:
+    // rays always march it.
+    const char* exact;
+    const char* exactSetup;      // unions of terms only
+    const char* exactTerm;
+    const char* metExactlyGlsl;  // null: every shape of the kind is met exactly
+    const char* exactLimit;      // the shapes it does not meet, for messages
+    bool exactInWorld;           // met in world space (its parameters transformed)
+    bool marchedOnRequest;
+    // Whether this shape of the kind is met exactly; false for every shape of a kind
+    // without an exact intersection.
+    bool (*metExactly)(const Geometry& geometry);
+    // The vec4s the exact call reads: in world space for a kind met there, else its own.
+    std::vector<glm::vec4> (*exactParameters)(const Geometry& geometry,
+                                              const std::optional<Transform>& transform);
 };
 
 template <typename T, typename List>
@@ -43,18 +59,24 @@ int userSdfCode();
 std::vector<glm::vec4> primitiveParameters(const Geometry& geometry);
 ShapeBound primitiveBound(const Geometry& geometry);
 
-// `distance` with each $k written as slot(k).
+// A GLSL template (`distance`, `exact`, ...) with each $k written as slot(k).
 template <typename Slot>
-std::string distanceOverSlots(const PrimitiveKind& kind, Slot slot)
+std::string overSlots(const char* glsl, Slot slot)
 {
     std::string text;
-    for (const char* c = kind.distance; *c != '\0'; ++c) {
+    for (const char* c = glsl; *c != '\0'; ++c) {
         if (*c == '$' && c[1] >= '0' && c[1] <= '9')
             text += slot(*++c - '0');
         else
             text += *c;
     }
     return text;
+}
+
+template <typename Slot>
+std::string distanceOverSlots(const PrimitiveKind& kind, Slot slot)
+{
+    return overSlots(kind.distance, slot);
 }
 
 }  // namespace scene

@@ -6,6 +6,7 @@
 #include "scene/Materials.h"
 #include "scene/Pigments.h"
 #include "scene/Primitives.h"
+#include "scene/Transform.h"
 
 #include <glm/glm.hpp>
 
@@ -78,20 +79,6 @@ struct CsgNode {
     float parameter = 0.0f;
     std::vector<Shape> children;  // two or more; difference subtracts all others from the first
 };
-
-// A similarity transform: world = rotation * (scale * local) + translation.
-struct Transform {
-    glm::mat3 rotation{1.0f};
-    glm::vec3 translation{0.0f};
-    float scale = 1.0f;
-};
-
-// The transform that applies `inner` first, then `outer`.
-Transform compose(const Transform& outer, const Transform& inner);
-glm::vec3 applyTransform(const Transform& transform, const glm::vec3& local);
-// A plane dot(n, x) + w = 0 (unit n) of a shape's local space, in world space: n' = R n,
-// w' = s w - dot(n', T).
-glm::vec4 applyTransformToPlane(const Transform& transform, const glm::vec4& localPlane);
 
 template <typename List, typename... More>
 struct VariantOf;

@@ -9,20 +9,12 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include <algorithm>
-#include <cctype>
-#include <cerrno>
-#include <cfloat>
-#include <charconv>
-#include <cmath>
-#include <cstdlib>
-#include <cstring>
-#include <fcntl.h>
-#include <fstream>
+#include <filesystem>
+#include <optional>
 #include <set>
-#include <sstream>
-#include <sys/stat.h>
-#include <unistd.h>
+#include <string>
+#include <string_view>
+#include <vector>
 
 namespace scene {
 

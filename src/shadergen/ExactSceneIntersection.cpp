@@ -1,5 +1,8 @@
 #include "shadergen/ExactSceneIntersection.h"
 
+#include "scene/PrimitiveKinds.h"
+#include "shadergen/ShapeCompiler.h"
+
 #include <functional>
 #include <sstream>
 #include <stdexcept>
@@ -12,21 +15,29 @@ namespace {
 
 std::string slot(int index)
 {
-    return "uShapeParameters[" + std::to_string(index) + "]";
+    return parameterSlot(index);
 }
 
+// What a shape without an exact intersection is, for the message refusing it.
 std::string shapeName(const Geometry& geometry)
 {
-    if (std::holds_alternative<Torus>(geometry)) {
-        std::ostringstream name;
-        name << "a torus whose minor radius is under " << kThinnestExactTorus
-             << " of its major radius (its quartic loses too many digits in float32)";
-        return name.str();
-    }
+    if (const PrimitiveKind* kind = primitiveKindOf(geometry))
+        return std::string("a ") + kind->keyword +
+               (kind->exactLimit != nullptr ? " where " + std::string(kind->exactLimit) : "");
     if (std::holds_alternative<UserSdf>(geometry))
         return "the user SDF '" + std::get<UserSdf>(geometry).name +
                "', whose file declares no // @intersect function";
     return "a CSG solid";
+}
+
+// "sphere, polyhedron, ... primitives": the kinds met exactly, for messages.
+std::string kindsMetExactly()
+{
+    std::string text;
+    for (const PrimitiveKind& kind : primitiveKinds())
+        if (kind.exact != nullptr)
+            text += (text.empty() ? "" : ", ") + std::string(kind.keyword);
+    return text;
 }
 
 // `meet(tMin, hit)`: a bool expression that replaces the ExactHit `hit` by the shape's first
@@ -77,64 +88,29 @@ std::optional<std::string> exactIntersectionStatements(const Shape& shape, std::
     const std::optional<Transform>& transform = shape.transform;
     const std::string id = std::to_string(object);
     std::ostringstream out;
-    if (const auto* sphere = std::get_if<Sphere>(&geometry)) {
-        // A similarity keeps a sphere a sphere: it is met in world space.
-        const glm::vec3 center =
-            transform ? applyTransform(*transform, sphere->center) : sphere->center;
-        const float radius = transform ? transform->scale * sphere->radius : sphere->radius;
-        out << "    exactSphere(origin, direction, " << slot(allocate({glm::vec4(center, radius)}))
-            << ", tMin, " << id << ", hit);\n";
-    } else if (const auto* polyhedron = std::get_if<Polyhedron>(&geometry)) {
-        out << "    {\n        ConvexInterval outside = wholeRay();\n";
-        for (const glm::vec4& plane : polyhedron->planes) {
-            const glm::vec4 unit = plane / glm::length(glm::vec3(plane));
-            const glm::vec4 world = transform ? applyTransformToPlane(*transform, unit) : unit;
-            out << "        clipOutsideHalfSpace(outside, origin, direction, "
-                << slot(allocate({world})) << ");\n";
-        }
-        out << "        exactHalfSpaceUnion(outside, tMin, " << id << ", hit);\n    }\n";
-    } else if (const auto* disk = std::get_if<Disk>(&geometry)) {
-        glm::vec3 center = disk->center;
-        glm::vec3 normal = glm::normalize(disk->normal);
-        float radius = disk->radius;
-        if (transform) {
-            center = applyTransform(*transform, center);
-            normal = transform->rotation * normal;
-            radius *= transform->scale;
-        }
-        const int s = allocate({glm::vec4(center, radius), glm::vec4(normal, 0.0f)});
-        out << "    exactDisk(origin, direction, " << slot(s) << ", " << slot(s + 1)
-            << ".xyz, tMin, " << id << ", hit);\n";
-    } else if (const auto* box = std::get_if<Box>(&geometry)) {
-        const int s =
-            allocate({glm::vec4(box->center, 0.0f), glm::vec4(box->halfExtents, 0.0f)});
-        out << inFrame(transform,
-                       exactCall("exactBox(o, d, " + slot(s) + ".xyz, " + slot(s + 1) + ".xyz, ", id),
-                       allocate);
-    } else if (const auto* cylinder = std::get_if<Cylinder>(&geometry)) {
-        const int s = allocate({glm::vec4(cylinder->center, cylinder->radius),
-                                glm::vec4(cylinder->halfHeight, 0.0f, 0.0f, 0.0f)});
-        out << inFrame(transform,
-                       exactCall("exactCappedCylinder(o, d, " + slot(s) + ".xyz, " + slot(s) +
-                                     ".w, " + slot(s + 1) + ".x, ",
-                                 id),
-                       allocate);
-    } else if (const auto* torus = std::get_if<Torus>(&geometry);
-               torus && torus->minorRadius >= kThinnestExactTorus * torus->majorRadius) {
-        const int s = allocate({glm::vec4(torus->center, torus->majorRadius),
-                                glm::vec4(torus->minorRadius, 0.0f, 0.0f, 0.0f)});
-        out << inFrame(transform,
-                       exactCall("exactTorus(o, d, " + slot(s) + ".xyz, " + slot(s) + ".w, " +
-                                     slot(s + 1) + ".x, ",
-                                 id),
-                       allocate);
-    } else if (const auto* cone = std::get_if<Cone>(&geometry)) {
-        const glm::vec2 unit = glm::normalize(cone->slope);
-        const int s = allocate({glm::vec4(cone->apex, 0.0f), glm::vec4(unit, 0.0f, 0.0f)});
-        out << inFrame(transform,
-                       exactCall("exactCone(o, d, " + slot(s) + ".xyz, " + slot(s + 1) + ".xy, ", id),
-                       allocate);
-    } else if (const auto* user = std::get_if<UserSdf>(&geometry);
+    if (const PrimitiveKind* kind = primitiveKindOf(geometry)) {
+        if (kind->exact == nullptr || !kind->metExactly(geometry))
+            return std::nullopt;
+        // A kind a similarity maps to one of its kind is met in world space, its parameters
+        // transformed; the others in their own frame.
+        const std::vector<glm::vec4> values = kind->exactParameters(geometry, transform);
+        const int first = allocate(values);
+        const std::string call =
+            overSlots(kind->exact, [&](int k) { return slot(first + k); });
+        if (!kind->unionOfTerms)
+            return inFrame(kind->exactInWorld ? std::nullopt : transform, exactCall(call, id),
+                           allocate);
+        std::string terms;
+        for (int term = 0; term < static_cast<int>(values.size()); ++term)
+            terms += overSlots(kind->exactTerm, [&](int) { return slot(first + term); }) +
+                     "\n        ";
+        const MeetInFrame meet = [&](const std::string& tMin, const std::string& hit) {
+            return terms + exactCall(call, id)(tMin, hit);
+        };
+        return inFrame(std::nullopt, meet, allocate,
+                       "        " + std::string(kind->exactSetup) + "\n");
+    }
+    if (const auto* user = std::get_if<UserSdf>(&geometry);
                user && user->intersectFunction) {
         // The file's own intersection (// @intersect): bool F(origin, direction, x, tMin,
         // tMax, out t, out normal), in the frame its distance function is evaluated in.
@@ -145,12 +121,10 @@ std::optional<std::string> exactIntersectionStatements(const Shape& shape, std::
                    ", " + hit + ".t, crossing, outward), crossing, outward, " + id + ", " + hit +
                    ")";
         };
-        out << inFrame(transform, meet, allocate,
+        return inFrame(transform, meet, allocate,
                        "        float crossing;\n        vec3 outward;\n");
-    } else {
-        return std::nullopt;
     }
-    return out.str();
+    return std::nullopt;
 }
 
 std::string generateExactSceneIntersection(const Scene& scene,
@@ -169,9 +143,9 @@ std::string generateExactSceneIntersection(const Scene& scene,
         if (!statements)
             throw std::runtime_error(
                 scene.sourcePath.string() + ":" + std::to_string(object.line) +
-                ": --exact-geometry intersects spheres, polyhedra, boxes, cylinders, disks, cones, "
-                "tori and user SDFs with an // @intersect function exactly; this object is " + shapeName(object.shape.geometry) +
-                ", which has no exact intersection here");
+                ": --exact-geometry intersects the primitives " + kindsMetExactly() +
+                " and user SDFs with an // @intersect function exactly; this object is " +
+                shapeName(object.shape.geometry) + ", which has no exact intersection here");
         body += *statements;
     }
     return "// Every object's first crossing in (tMin, hit.t), exactly (exact_shapes.glsl).\n"

@@ -33,7 +33,7 @@ std::string primitiveInterpreter()
     int fetched = 0;
     auto fetch = [&](int count) {
         for (; fetched < count; ++fetched)
-            out << "    vec4 " << names[fetched] << " = uShapeParameters[first"
+            out << "    vec4 " << names[fetched] << " = SHAPE_PARAMETERS[first"
                 << (fetched == 0 ? "" : " + " + std::to_string(fetched)) << "];\n";
     };
     fetch(1);  // the user SDF's
@@ -43,7 +43,7 @@ std::string primitiveInterpreter()
             out << "    if (kind == " << code << ") {\n        float d = FLOAT_MAX;\n"
                 << "        for (int term = 0; term < extra && loopIterationAllowed(); ++term)\n"
                 << "            d = min(d, "
-                << distanceOverSlots(*kind, [](int) { return "uShapeParameters[first + term]"; })
+                << distanceOverSlots(*kind, [](int) { return "SHAPE_PARAMETERS[first + term]"; })
                 << ");\n        return d;\n    }\n";
             continue;
         }
@@ -52,6 +52,63 @@ std::string primitiveInterpreter()
             << distanceOverSlots(*kind, [&](int k) { return std::string(1, names[k]); }) << ";\n";
     }
     out << "    return callUserSdf(extra, p, a.xyz) * a.w;\n}\n";
+    return out.str();
+}
+
+// The general shader's exact intersections (shape_interpreter.glsl meets a single
+// untransformed primitive exactly where its kind has a closed form): a branch per kind, in
+// world space, from the same descriptions the specialised shader's calls are written from.
+std::string exactPrimitiveInterpreter()
+{
+    const char* const names = "abcdefgh";
+    std::vector<const PrimitiveKind*> kinds;
+    for (const PrimitiveKind& kind : primitiveKinds())
+        if (kind.exact != nullptr)
+            kinds.push_back(&kind);
+    std::stable_sort(kinds.begin(), kinds.end(), [](const PrimitiveKind* a, const PrimitiveKind* b) {
+        return a->parameterCount < b->parameterCount;
+    });
+    auto slot = [](int k) { return k == 0 ? "SHAPE_PARAMETERS[first]"
+                                          : "SHAPE_PARAMETERS[first + " + std::to_string(k) + "]"; };
+    std::ostringstream out;
+    out << "// Whether rays meet primitive `kind`, its parameters from SHAPE_PARAMETERS[first], by "
+           "exact\n// intersection (scene/Primitives.h).\n"
+           "bool primitiveMetExactly(int kind, int first)\n{\n    return ";
+    for (std::size_t i = 0; i < kinds.size(); ++i) {
+        const PrimitiveKind& kind = *kinds[i];
+        std::string test = "kind == " + primitiveCodeName(kind);
+        if (kind.metExactlyGlsl != nullptr)
+            test += " && " + overSlots(kind.metExactlyGlsl, slot);
+        if (kind.marchedOnRequest)
+            test += " && EXACT_BOXES_CYLINDERS_AND_DISKS != 0";
+        const bool compound = test.find("&&") != std::string::npos;
+        out << (i == 0 ? "" : " ||\n           ") << (compound ? "(" + test + ")" : test);
+    }
+    out << ";\n}\n\n";
+
+    out << "// The first crossing in (tMin, hit.t) of primitive `kind` by the ray (o, d), its\n"
+           "// parameters from SHAPE_PARAMETERS[first] (`terms` of them for a union of terms).\n"
+           "void exactPrimitiveIntersect(int kind, int first, int terms, vec3 o, vec3 d, "
+           "float tMin,\n                             int object, inout ExactHit hit)\n{\n";
+    int fetched = 0;
+    for (const PrimitiveKind* kind : kinds) {
+        const std::string code = primitiveCodeName(*kind);
+        const std::string tail = "tMin, object, hit);\n";
+        if (kind->unionOfTerms) {
+            out << "    if (kind == " << code << ") {\n        " << kind->exactSetup << "\n"
+                << "        for (int term = 0; term < terms && loopIterationAllowed(); ++term)\n"
+                << "            "
+                << overSlots(kind->exactTerm, [](int) { return "SHAPE_PARAMETERS[first + term]"; })
+                << "\n        " << kind->exact << tail << "        return;\n    }\n";
+            continue;
+        }
+        for (; fetched < kind->parameterCount; ++fetched)
+            out << "    vec4 " << names[fetched] << " = " << slot(fetched) << ";\n";
+        out << "    if (kind == " << code << ") {\n        "
+            << overSlots(kind->exact, [&](int k) { return std::string(1, names[k]); }) << tail
+            << "        return;\n    }\n";
+    }
+    out << "}\n";
     return out.str();
 }
 
@@ -104,7 +161,8 @@ InterpretedScene interpretedScene(const Scene& scene, ShapeCompiler& compiler)
     }
     // Declared before the interpreter module, which calls them.
     interpreted.functions = userSdfDispatcher(compiler.userSdfIds()) + "\n" +
-                            primitiveInterpreter() + "\n" + csgInterpreter();
+                            primitiveInterpreter() + "\n" + csgInterpreter() + "\n" +
+                            exactPrimitiveInterpreter();
     return interpreted;
 }
 

@@ -109,7 +109,7 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
         out << "#define ENVIRONMENT_KIND ENVIRONMENT_KIND_FROM_UNIFORM\n";
     define(out, "PROFILE_COUNTERS", build.profileCounters ? 1 : 0);
     define(out, "EXACT_BOXES_CYLINDERS_AND_DISKS", build.marchBoxesCylindersAndDisks ? 0 : 1);
-    out << "#define THINNEST_EXACT_TORUS " << kThinnestExactTorus << "\n";
+    out << "#define THINNEST_EXACT_TORUS " << Primitive<Torus>::kThinnestExact << "\n";
     // Where every object is met exactly (polyhedra, spheres, lights), no ray marches: the
     // sphere tracer's loops are left out, which llvmpipe would otherwise run once per ray
     // with no pixel in them.

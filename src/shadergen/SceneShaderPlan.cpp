@@ -1,6 +1,7 @@
 #include "shadergen/SceneShaderPlan.h"
 
 #include "shadergen/ExactSceneIntersection.h"
+#include "scene/PrimitiveKinds.h"
 #include "scene/SceneBounds.h"
 
 #include <map>
@@ -62,11 +63,8 @@ ScenePlan planScene(const Scene& scene, ShapeCompiler& compiler, bool marchBoxes
         // bit, which rays meet exactly as lights): a ray meets a sphere, a box, a capped
         // cylinder, a disk or a cone where the quadratic or the slabs say, with the shape's
         // own normal, and its silhouettes, edges and contacts have no tolerance band.
-        const bool marchedOnRequest =
-            marchBoxesCylindersAndDisks &&
-            (std::holds_alternative<Box>(shape.geometry) ||
-             std::holds_alternative<Cylinder>(shape.geometry) ||
-             std::holds_alternative<Disk>(shape.geometry));
+        const PrimitiveKind* kind = primitiveKindOf(shape.geometry);
+        const bool marchedOnRequest = marchBoxesCylindersAndDisks && kind && kind->marchedOnRequest;
         if (lightBits.count(i) == 0 && !marchedOnRequest) {
             const ShapeParameterAllocator allocate = [&](const std::vector<glm::vec4>& values) {
                 const int first = compiler.allocateValues(values);

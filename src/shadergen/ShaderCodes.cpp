@@ -3,6 +3,7 @@
 #include "scene/KindCodes.h"
 #include "scene/PrimitiveKinds.h"
 #include "scene/Scene.h"
+#include "settings/SettingsTable.h"
 
 #include <sstream>
 
@@ -37,6 +38,7 @@ std::string shaderCodeDefines()
         define(out, scene::codeName(pigment), pigment.code);
     for (const scene::EnvironmentDescription& environment : scene::environmentDescriptions())
         define(out, scene::codeName(environment), environment.code);
+    out << settings::choiceDefines();
     return out.str();
 }
 

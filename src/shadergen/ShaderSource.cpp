@@ -76,6 +76,18 @@ std::string ShaderSource::text() const
     return result;
 }
 
+std::set<std::string> declaredUniforms(const ShaderSource& source)
+{
+    static const std::regex declaration(R"(^\s*uniform\s+\w+\s+(\w+))");
+    std::set<std::string> names;
+    std::istringstream lines(source.text());
+    std::smatch match;
+    for (std::string line; std::getline(lines, line);)
+        if (std::regex_search(line, match, declaration))
+            names.insert(match[1]);
+    return names;
+}
+
 std::string ShaderSource::explainLog(const std::string& log) const
 {
     static const std::regex mesa(R"(^\s*(\d+):(\d+)\((\d+)\):\s*(.*)$)");

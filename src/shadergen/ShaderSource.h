@@ -1,5 +1,6 @@
 #pragma once
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,8 @@ public:
     void addFile(const std::filesystem::path& file, const std::filesystem::path& root);
 
     std::string text() const;
+    // The pieces' names, in order ("modules/camera.glsl" for a module under `root`).
+    const std::vector<std::string>& pieceNames() const { return names_; }
 
     // Rewrites a compiler log's "0:12(5): error: ..." (Mesa), "0(12) : error ..." (NVIDIA)
     // or "ERROR: 0:12: ..." (AMD, Intel) locations as "name:12: error: ...", followed by the
@@ -35,6 +38,9 @@ private:
     std::vector<std::string> texts_;
     std::vector<long> firstLines_;  // the line number of each piece's first line
 };
+
+// The names of the uniforms `source` declares (lines `uniform TYPE NAME...`), in every piece.
+std::set<std::string> declaredUniforms(const ShaderSource& source);
 
 // The text of a file; throws std::runtime_error naming it when it cannot be read.
 std::string readTextFile(const std::filesystem::path& file);

@@ -112,7 +112,7 @@ std::string specializedSceneFunctions(const ScenePlan& plan, const std::string& 
 
     out << "RayCulling sceneRayCulling(vec3 origin, vec3 direction, float tolerance0,\n"
            "                           float toleranceGrowth)\n{\n"
-           "    if (uRayCulling == 0 || !(toleranceGrowth < kMaxCullableToleranceGrowth))\n"
+           "    if (!gRayCulling || !(toleranceGrowth < kMaxCullableToleranceGrowth))\n"
            "        return noRayCulling();\n"
            "    RayCulling culling = RayCulling(0u, 0.0);\n";
     for (const std::vector<const ObjectPlan*>* objects : {&cheap, &bounded})

@@ -41,8 +41,9 @@ void expectSameMetadata(const film::RenderMetadata& read, const film::RenderMeta
     EXPECT_EQ(read.program, written.program);
     EXPECT_EQ(read.gitCommit, written.gitCommit);
     EXPECT_EQ(read.mergedFrom, written.mergedFrom);
-    for (const film::ImageSetting& setting : film::imageSettings())
-        EXPECT_EQ(setting.text(read.settings), setting.text(written.settings)) << setting.key;
+    for (const settings::SettingRow* setting : film::imageSettings())
+        EXPECT_EQ(setting->format(read.settings), setting->format(written.settings))
+            << setting->description.metadataKey;
 }
 
 // One change of each image-changing setting away from the defaults. A setting added to the

@@ -5,8 +5,10 @@
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
 #include "render/PathTracerProgram.h"
+#include "render/SceneUniforms.h"
 #include "shadergen/ShaderCodes.h"
 #include "shadergen/ShaderSource.h"
+#include "shadergen/UniformBlock.h"
 #include "support/TestPaths.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -29,9 +31,12 @@ shadergen::ShaderSource probeSource()
                "#define PIGMENT_ARRAY_SIZE 1\n#define FINISH_ARRAY_SIZE 1\n"
                "#define LIGHT_ARRAY_SIZE 1\n" +
                    shadergen::shaderCodeDefines());
-    for (const char* module :
-         {"constants.glsl", "rng.glsl", "sampler.glsl", "sampling.glsl", "scene_data.glsl", "fresnel.glsl",
-          "materials.glsl"})
+    const std::vector<std::string> modules = {"constants.glsl", "rng.glsl",        "sampler.glsl",
+                                              "sampling.glsl",  "scene_data.glsl", "fresnel.glsl",
+                                              "materials.glsl"};
+    source.add("<generated: the uniforms, read once per pixel>",
+               shadergen::uniformBlock(render::pathTracerUniformDeclarations(), modules));
+    for (const std::string& module : modules)
         source.addFile(shaders / "modules" / module, shaders);
     source.addFile(testing_support::testsDirectory() / "sampling" / "sampling_probe.frag",
                    testing_support::testsDirectory());
@@ -64,7 +69,9 @@ std::vector<glm::vec4> ShaderSampler::draw(int mode, const SamplingCase& samplin
     program_.use();
     auto location = [&](const char* name) { return program_.uniformLocation(name); };
     glUniform1i(location("uMode"), mode);
-    glUniform1i(location("uSampler"), choice.sobol ? 1 : 0);
+    glUniform1i(location("uSampler"), settings::choiceCode(choice.sobol
+                                                               ? settings::SamplerKind::Sobol
+                                                               : settings::SamplerKind::Independent));
     glUniform2ui(location("uSeed"), static_cast<GLuint>(seed), static_cast<GLuint>(seed >> 32));
     glUniform1i(location("uSequence"), choice.onePixelSequence ? 1 : 0);
     glUniform1i(location("uSampleIndex"), choice.sampleIndex);
@@ -80,7 +87,7 @@ std::vector<glm::vec4> ShaderSampler::draw(int mode, const SamplingCase& samplin
     glUniform2f(location("uGridCells"), static_cast<float>(grid.thetaCells),
                 static_cast<float>(grid.phiCells));
     glUniform1f(location("uGridThetaMax"), grid.thetaMax);
-    glUniform1i(location("uExactFresnel"), 0);
+    glUniform1i(location("uDielectricFresnel"), settings::choiceCode(settings::FresnelModel::Schlick));
 
 
     framebuffer.bindForDrawing();

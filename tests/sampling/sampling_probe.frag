@@ -69,10 +69,9 @@ float routinePdf(vec3 direction)
 
 void main()
 {
-    // The modules read their uniforms through copies, which main() fills (scene_data.glsl).
-    readSceneDataUniformsOnce();
-    readSamplerUniformsOnce();
-    readFresnelUniformsOnce();
+    // The modules read their uniforms through copies, which main() fills
+    // (shadergen/UniformBlock.h).
+    readUniformsOnce();
     ivec2 fragment = ivec2(gl_FragCoord.xy);
     if (uMode == 1 || uMode == 3) {
         float theta = gl_FragCoord.x / uGridCells.x * uGridThetaMax;
