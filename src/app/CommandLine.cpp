@@ -245,13 +245,21 @@ void readArguments(int argc, const char* const argv[], int first, const std::vec
     }
 }
 
+// raytracer WORD ...: the arguments after the word, read by `entries`.
+CommandLine parseSubcommand(int argc, const char* const argv[], Action action,
+                            const std::vector<Entry>& entries, std::vector<std::string>& positional)
+{
+    CommandLine line;
+    line.action = action;
+    readArguments(argc, argv, 2, entries, line, positional);
+    return line;
+}
+
 // raytracer info FILE
 CommandLine parseInfo(int argc, const char* const argv[])
 {
-    CommandLine line;
-    line.action = Action::Info;
     std::vector<std::string> positional;
-    readArguments(argc, argv, 2, infoEntries(), line, positional);
+    CommandLine line = parseSubcommand(argc, argv, Action::Info, infoEntries(), positional);
     if (line.action == Action::Help)
         return line;
     if (positional.size() != 1)
@@ -263,10 +271,8 @@ CommandLine parseInfo(int argc, const char* const argv[])
 // raytracer merge OUT.exr IN.exr... [--png FILE] [--stats-output FILE]
 CommandLine parseMerge(int argc, const char* const argv[])
 {
-    CommandLine line;
-    line.action = Action::Merge;
     std::vector<std::string> positional;
-    readArguments(argc, argv, 2, mergeEntries(), line, positional);
+    CommandLine line = parseSubcommand(argc, argv, Action::Merge, mergeEntries(), positional);
     if (line.action == Action::Help)
         return line;
     if (positional.size() < 2)

@@ -1,24 +1,18 @@
 #include "film/ToneCurve.h"
 
+#include "settings/OptionValues.h"
+
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 namespace film {
 
 namespace {
 
-// The shortest decimal that reads back as `value` ("0.15", not "0.14999999999999999").
+// The shortest decimal that reads back as `value`, as a GLSL float literal.
 std::string shortestDecimal(double value)
 {
-    char text[32];
-    for (int digits = 1; digits <= 17; ++digits) {
-        std::snprintf(text, sizeof text, "%.*g", digits, value);
-        if (std::strtod(text, nullptr) == value)
-            break;
-    }
-    std::string decimal = text;
+    std::string decimal = settings::shortestDoubleText(value);
     // A GLSL float literal needs a point or an exponent.
     if (decimal.find_first_of(".e") == std::string::npos)
         decimal += ".0";

@@ -22,7 +22,7 @@ std::string shortestFloatText(float value)
 std::string shortestDoubleText(double value)
 {
     char text[40];
-    for (int digits = 6; digits <= 17; ++digits) {
+    for (int digits = 1; digits <= 17; ++digits) {
         std::snprintf(text, sizeof text, "%.*g", digits, value);
         if (std::strtod(text, nullptr) == value)
             break;

@@ -47,7 +47,8 @@ constexpr const char* glslTypeOf()
 // The shortest decimal that reads back as the same float (nine significant digits always
 // do): 1.2, not 1.20000005.
 std::string shortestFloatText(float value);
-// Likewise for a double (up to 17 digits).
+// The shortest decimal that reads back as the same double (up to 17 digits): 0.15, not
+// 0.14999999999999999.
 std::string shortestDoubleText(double value);
 
 // Strict readers: the whole text, a finite value.
