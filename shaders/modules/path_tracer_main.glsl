@@ -32,10 +32,12 @@ void main()
     // Before any branch: the uniforms are read once (scene_data.glsl).
     readSceneDataUniformsOnce();
     readCameraUniformsOnce();
+    readLensUniformsOnce();
     readEnvironmentUniformsOnce();
     readFresnelUniformsOnce();
     readIntegratorUniformsOnce();
     readLightsUniformsOnce();
+    readMicrofacetUniformsOnce();
     readPigmentsUniformsOnce();
     readRayCullingUniformsOnce();
     readSamplerUniformsOnce();

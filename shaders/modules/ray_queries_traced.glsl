@@ -336,6 +336,14 @@ float cameraMarchStart(ivec2 pixel)
     // subtends the largest angle at the centre of the image.
     float growth = (0.7072 + uHitTolerance) * cameraPixelSpread();
     float tolerance0 = uMinimumHitDistance;
+#if HAS_THIN_LENS
+    // Through a lens, rays leave within uLensRadius of the eye and turn from the pinhole's
+    // ray by at most uLensRadius / uFocusDistance (they meet it on the plane of focus, at
+    // least that far): a ray's point at distance t lies within uLensRadius + t times that
+    // angle of the pinhole's, so a cone that much wider holds every one.
+    tolerance0 += uLensRadius;
+    growth += uLensRadius / uFocusDistance;
+#endif
     RayCulling culling = sceneRayCulling(uCameraEye, axis, tolerance0, growth);
     float limit = min(uFarDistance, culling.escapeDistance);
     return coneClearance(uCameraEye, axis, tolerance0, growth, culling.mask, limit);

@@ -40,8 +40,15 @@ uniform ivec4 uObjects[OBJECT_ARRAY_SIZE];
 // Per pigment, three vec4: (kind, size, texture layer, -), (colour, -), (second colour, -).
 uniform vec4 uPigments[3 * PIGMENT_ARRAY_SIZE];
 
-// Per finish, two vec4: (emitted radiance, Blinn-Phong exponent), (material, ior, -, -).
+// Per finish, two vec4: (emitted radiance, Blinn-Phong exponent), (material, ior, GGX
+// roughness alpha, -).
 uniform vec4 uFinishes[2 * FINISH_ARRAY_SIZE];
+
+#if HAS_ROUGH_CONDUCTOR
+// Per finish, two vec4: (eta, 1 where the finish has this complex index of refraction, 0
+// where its Fresnel is Schlick's with the pigment), (k, -).
+uniform vec4 uFinishConductors[2 * FINISH_ARRAY_SIZE];
+#endif
 
 // Per light, three vec4: (position or centre, radius), (intensity or radiance, selection
 // probability), (cumulative selection probability, object index or -1 for a point light,
@@ -75,8 +82,13 @@ vec4 uPigmentsReadOnce[3];
 #if FINISH_ARRAY_SIZE == 1
 vec4 uFinishesReadOnce[2];
 #define FINISH_RECORD(finish, part) uFinishesReadOnce[part]
+#if HAS_ROUGH_CONDUCTOR
+vec4 uFinishConductorsReadOnce[2];
+#define CONDUCTOR_RECORD(finish, part) uFinishConductorsReadOnce[part]
+#endif
 #else
 #define FINISH_RECORD(finish, part) uFinishes[2 * (finish) + (part)]
+#define CONDUCTOR_RECORD(finish, part) uFinishConductors[2 * (finish) + (part)]
 #endif
 #if LIGHT_ARRAY_SIZE == 1
 vec4 uLightsReadOnce[3];
@@ -98,6 +110,10 @@ void readSceneDataUniformsOnce()
 #if FINISH_ARRAY_SIZE == 1
     for (int part = 0; part < 2; ++part)
         uFinishesReadOnce[part] = uFinishes[part];
+#if HAS_ROUGH_CONDUCTOR
+    for (int part = 0; part < 2; ++part)
+        uFinishConductorsReadOnce[part] = uFinishConductors[part];
+#endif
 #endif
 #if LIGHT_ARRAY_SIZE == 1
     for (int part = 0; part < 3; ++part)
@@ -125,6 +141,12 @@ vec3 finishEmission(int finish) { return FINISH_RECORD(finish, 0).rgb; }
 float finishPhongExponent(int finish) { return FINISH_RECORD(finish, 0).w; }
 int finishMaterial(int finish) { return int(FINISH_RECORD(finish, 1).x); }
 float finishIor(int finish) { return FINISH_RECORD(finish, 1).y; }
+float finishRoughness(int finish) { return FINISH_RECORD(finish, 1).z; }
+#if HAS_ROUGH_CONDUCTOR
+bool finishHasComplexIor(int finish) { return CONDUCTOR_RECORD(finish, 0).w > 0.0; }
+vec3 finishConductorEta(int finish) { return CONDUCTOR_RECORD(finish, 0).rgb; }
+vec3 finishConductorK(int finish) { return CONDUCTOR_RECORD(finish, 1).rgb; }
+#endif
 
 vec3 lightPosition(int light) { return LIGHT_RECORD(light, 0).xyz; }
 float lightRadius(int light) { return LIGHT_RECORD(light, 0).w; }

@@ -242,6 +242,8 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
                 nonNegativeInteger(value(argument), "--rr-depth", 1024);
         } else if (argument == "--no-mis") {
             line.settings.multipleImportanceSampling = false;
+        } else if (argument == "--no-energy-compensation") {
+            line.settings.energyCompensation = false;
         } else if (argument == "--exact-geometry") {
             line.settings.exactGeometry = true;
         } else if (argument == "--no-culling") {
@@ -383,6 +385,9 @@ accuracy (see docs/ACCURACY.md for what each costs):
   --rr-depth N          bounces before Russian roulette may end a path (default 4)
   --no-mis              light sampling only for sphere lights, no multiple importance sampling
   --fresnel MODEL       dielectric Fresnel: schlick (default) or exact
+  --no-energy-compensation
+                        rough conductors without the multiple-scattering compensation
+                        (single-scattering GGX, as renderers without it have)
   --sampler KIND        sobol (default): Owen-scrambled Sobol points for the pixel and the
                         first four bounces; independent: random numbers for every decision
 

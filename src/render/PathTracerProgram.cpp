@@ -57,6 +57,8 @@ ShaderSource assemblePathTracerSource(const SceneShaderCode& code, const fs::pat
     module("sphere_tracing.glsl");
     module("camera.glsl");
     module("fresnel.glsl");
+    module("ggx_albedo_table.glsl");
+    module("microfacet.glsl");
     module("pigments.glsl");
     source.add("<generated: pigmentColor over the pigment kinds>", pigmentDispatcher());
     module("materials.glsl");

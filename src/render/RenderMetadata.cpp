@@ -100,6 +100,9 @@ const std::vector<ImageSetting>& imageSettings()
              s.dielectricFresnel = t == "exact" ? FresnelModel::Exact : FresnelModel::Schlick;
              return true;
          }},
+        {"energyCompensation", "microfacet energy compensation", "--no-energy-compensation",
+         [](const RenderSettings& s) { return onOff(s.energyCompensation); },
+         [](RenderSettings& s, const std::string& t) { return readOnOff(t, s.energyCompensation); }},
         {"sampler", "sampler", "--sampler",
          [](const RenderSettings& s) {
              return std::string(s.sampler == SamplerKind::Sobol ? "sobol" : "independent");

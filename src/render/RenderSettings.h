@@ -35,6 +35,10 @@ struct RenderSettings {
     // it changes the time a march takes, not what it meets.
     bool rayCulling = true;
     FresnelModel dielectricFresnel = FresnelModel::Schlick;
+    // Rough conductors regain the energy of the light that scatters between microfacets
+    // more than once, which the single-scattering GGX model loses (Turquin 2019; see
+    // shaders/modules/microfacet.glsl). Off only to compare with renderers without it.
+    bool energyCompensation = true;
     SamplerKind sampler = SamplerKind::Sobol;
     // Rays that escape see the scene's environment; off, they see black. Takes effect only
     // in a shader that reads the environment from a uniform (switchableEnvironment).

@@ -75,7 +75,9 @@ std::vector<double> lightPowers(const Scene& scene)
 bool SceneUniforms::operator==(const SceneUniforms& other) const
 {
     return objects == other.objects && pigments == other.pigments &&
-           finishes == other.finishes && lights == other.lights &&
+           finishes == other.finishes && conductors == other.conductors &&
+           lights == other.lights && lens.apertureRadius == other.lens.apertureRadius &&
+           lens.focusDistance == other.lens.focusDistance &&
            sphereLightPieces == other.sphereLightPieces &&
            textureLayers == other.textureLayers &&
            cameraFrame.right == other.cameraFrame.right &&
@@ -110,7 +112,11 @@ SceneUniforms packSceneUniforms(const Scene& scene, const SceneShaderCode& code)
     for (const Finish& finish : scene.finishes) {
         packed.finishes.emplace_back(finish.emission, finish.phongExponent);
         packed.finishes.emplace_back(static_cast<float>(describe(finish.material()).code),
-                                     finish.ior, 0.0f, 0.0f);
+                                     finish.ior, finish.roughness, 0.0f);
+        // w = 1: the complex index below; 0: Schlick's Fresnel with the pigment as R0.
+        const ComplexIor ior = finish.conductorIor.value_or(ComplexIor{});
+        packed.conductors.emplace_back(ior.eta, finish.conductorIor ? 1.0f : 0.0f);
+        packed.conductors.emplace_back(ior.k, 0.0f);
     }
 
     const std::vector<SphereLight> spheres = sphereLights(scene);
@@ -157,6 +163,7 @@ SceneUniforms packSceneUniforms(const Scene& scene, const SceneShaderCode& code)
     packed.cameraEye = scene.camera.eye;
     packed.tanHalfFovy =
         std::tan(0.5f * scene.camera.verticalFieldOfViewDegrees * kPi / 180.0f);
+    packed.lens = scene.camera.lens.value_or(ThinLens{});
     packed.bounds = computeSceneBounds(scene);
     packed.environment = scene.environment;
     return packed;
@@ -172,6 +179,7 @@ void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
     setArray(program, "uObjects", uniforms.objects);
     setArray(program, "uPigments", uniforms.pigments);
     setArray(program, "uFinishes", uniforms.finishes);
+    setArray(program, "uFinishConductors", uniforms.conductors);
     setArray(program, "uLights", uniforms.lights);
 
     setVec3(program, "uCameraEye", uniforms.cameraEye);
@@ -179,6 +187,8 @@ void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
     setVec3(program, "uCameraUp", uniforms.cameraFrame.trueUp);
     setVec3(program, "uCameraForward", uniforms.cameraFrame.forward);
     setFloat(program, "uTanHalfFovy", uniforms.tanHalfFovy);
+    setFloat(program, "uLensRadius", uniforms.lens.apertureRadius);
+    setFloat(program, "uFocusDistance", uniforms.lens.focusDistance);
     glUniform2f(program.uniformLocation("uImageSize"), static_cast<float>(width),
                 static_cast<float>(height));
 
@@ -198,6 +208,7 @@ void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
     setInt(program, "uUseMis", settings.multipleImportanceSampling ? 1 : 0);
     setInt(program, "uRayCulling", settings.rayCulling ? 1 : 0);
     setInt(program, "uExactFresnel", settings.dielectricFresnel == FresnelModel::Exact ? 1 : 0);
+    setInt(program, "uEnergyCompensation", settings.energyCompensation ? 1 : 0);
     setInt(program, "uSampler", settings.sampler == SamplerKind::Sobol ? 1 : 0);
     glUniform1ui(program.uniformLocation("uSphereLightPieces"), uniforms.sphereLightPieces);
     glUniform2ui(program.uniformLocation("uSeed"), static_cast<GLuint>(settings.seed),

@@ -18,6 +18,8 @@ CameraFrame cameraFrame(const Camera& camera)
 
 MaterialKind Finish::material() const
 {
+    if (keywordMaterial)
+        return *keywordMaterial;
     if (transmission > 0.0f)
         return MaterialKind::Dielectric;
     if (reflection > 0.0f)

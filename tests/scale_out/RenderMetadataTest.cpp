@@ -60,6 +60,7 @@ settingChanges()
             {"--rr-depth", [](render::RenderSettings& s) { s.russianRouletteDepth = 2; }},
             {"--no-mis", [](render::RenderSettings& s) { s.multipleImportanceSampling = false; }},
             {"--fresnel", [](render::RenderSettings& s) { s.dielectricFresnel = render::FresnelModel::Exact; }},
+            {"--no-energy-compensation", [](render::RenderSettings& s) { s.energyCompensation = false; }},
             {"--sampler", [](render::RenderSettings& s) { s.sampler = render::SamplerKind::Independent; }},
             {"--exact-geometry", [](render::RenderSettings& s) { s.exactGeometry = true; }},
             {"--no-specialize", [](render::RenderSettings& s) { s.variant = render::ShaderVariant::General; }},
