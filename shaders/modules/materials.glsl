@@ -275,7 +275,9 @@ BsdfSample roughConductorSample(Surface s, vec3 wo, float uLobe, vec2 uDirection
 // dielectric has it. Sampling draws a visible normal, then reflection with probability F,
 // so that every weight is the tint times G2 / G1(wo) (times the radiance scaling on
 // refraction). No energy compensation: what scatters between microfacets more than once is
-// lost (about 10 % at alpha = 1 in the furnace, FurnaceTest).
+// lost, most of it inside the medium, where most microfacets reflect totally (a clear sphere
+// of index 1.5 in the white furnace reads 0.98, 0.75 and 0.35 at alpha 0.05, 0.3 and 1;
+// FurnaceTest).
 
 #if HAS_ROUGH_DIELECTRIC
 // The indices of refraction on wo's side and on the other side.
