@@ -13,6 +13,30 @@
 // then as sharp as this.
 const float kMinimumGgxAlpha = 1e-4;
 
+// 1: Smith's separable masking-shadowing G1(wo) G1(wi), to compare with renderers that use it
+// (Mitsuba 3); 0: height-correlated (the default, below).
+uniform int uSeparableMasking;
+#if HAS_ROUGH_CONDUCTOR
+uniform int uEnergyCompensation;  // 1: compensate (the default), 0: single scattering only
+#endif
+
+// Read once per pixel, before any branch (see scene_data.glsl): the code below sees copies.
+int uSeparableMaskingReadOnce;
+#if HAS_ROUGH_CONDUCTOR
+int uEnergyCompensationReadOnce;
+#endif
+void readMicrofacetUniformsOnce()
+{
+    uSeparableMaskingReadOnce = uSeparableMasking;
+#if HAS_ROUGH_CONDUCTOR
+    uEnergyCompensationReadOnce = uEnergyCompensation;
+#endif
+}
+#define uSeparableMasking uSeparableMaskingReadOnce
+#if HAS_ROUGH_CONDUCTOR
+#define uEnergyCompensation uEnergyCompensationReadOnce
+#endif
+
 float ggxAlpha(float roughness)
 {
     return max(roughness, kMinimumGgxAlpha);
@@ -50,10 +74,15 @@ float ggxMasking(vec3 w, float alpha)
 }
 
 // G2(wo, wi), height-correlated masking-shadowing (Heitz 2014, eq. 99): a point hidden from
-// wo is likelier hidden from wi too, which the separable G1 G1 ignores.
+// wo is likelier hidden from wi too, which the separable G1 G1 (eq. 98) ignores, so the
+// separable form darkens rough surfaces at grazing angles (an alpha = 1 silver ball by 11 %
+// near its rim; docs/ACCURACY.md).
 float ggxMaskingShadowing(vec3 wo, vec3 wi, float alpha)
 {
-    return 1.0 / (1.0 + ggxLambda(wo, alpha) + ggxLambda(wi, alpha));
+    float lambdaO = ggxLambda(wo, alpha);
+    float lambdaI = ggxLambda(wi, alpha);
+    return uSeparableMasking != 0 ? 1.0 / ((1.0 + lambdaO) * (1.0 + lambdaI))
+                                  : 1.0 / (1.0 + lambdaO + lambdaI);
 }
 
 // G2 / G1(wo): the weight of a direction sampled from the visible normals of wo, written
@@ -61,7 +90,9 @@ float ggxMaskingShadowing(vec3 wo, vec3 wi, float alpha)
 float ggxShadowingGivenMasking(vec3 wo, vec3 wi, float alpha)
 {
     float lambdaO = ggxLambda(wo, alpha);
-    return (1.0 + lambdaO) / (1.0 + lambdaO + ggxLambda(wi, alpha));
+    float lambdaI = ggxLambda(wi, alpha);
+    return uSeparableMasking != 0 ? 1.0 / (1.0 + lambdaI)
+                                  : (1.0 + lambdaO) / (1.0 + lambdaO + lambdaI);
 }
 
 // A normal m from the distribution of normals visible from wo, D_wo(m) =
@@ -104,16 +135,6 @@ float ggxVisibleNormalPdf(vec3 wo, vec3 m, float alpha)
 // bounces more is reflected more times. The factor depends on wo only, so sampling and
 // densities are unchanged.
 
-uniform int uEnergyCompensation;  // 1: compensate (the default), 0: single scattering only
-
-// Read once per pixel, before any branch (see scene_data.glsl): the code below sees copies.
-int uEnergyCompensationReadOnce;
-void readMicrofacetUniformsOnce()
-{
-    uEnergyCompensationReadOnce = uEnergyCompensation;
-}
-#define uEnergyCompensation uEnergyCompensationReadOnce
-
 // E(mu, alpha), bilinear in the table; beyond its first and last mu nodes, their values.
 float ggxDirectionalAlbedo(float cosTheta, float alpha)
 {
@@ -140,7 +161,7 @@ vec3 ggxEnergyCompensation(vec3 normalReflectance, float cosO, float alpha)
 #endif
 #endif
 
-#if !HAS_ROUGH_CONDUCTOR
+#if !HAS_MICROFACET
 void readMicrofacetUniformsOnce() {}
 
 #endif

@@ -244,6 +244,15 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
             line.settings.multipleImportanceSampling = false;
         } else if (argument == "--no-energy-compensation") {
             line.settings.energyCompensation = false;
+        } else if (argument == "--masking") {
+            const std::string model = value(argument);
+            if (model == "correlated")
+                line.settings.masking = render::MaskingModel::HeightCorrelated;
+            else if (model == "separable")
+                line.settings.masking = render::MaskingModel::Separable;
+            else
+                throw UsageError("--masking must be 'correlated' or 'separable', not '" + model +
+                                 "'");
         } else if (argument == "--exact-geometry") {
             line.settings.exactGeometry = true;
         } else if (argument == "--no-culling") {
@@ -388,6 +397,8 @@ accuracy (see docs/ACCURACY.md for what each costs):
   --no-energy-compensation
                         rough conductors without the multiple-scattering compensation
                         (single-scattering GGX, as renderers without it have)
+  --masking MODEL       microfacet masking-shadowing: correlated (height-correlated Smith,
+                        default) or separable (G1 G1, as Mitsuba 3 has it)
   --sampler KIND        sobol (default): Owen-scrambled Sobol points for the pixel and the
                         first four bounces; independent: random numbers for every decision
 

@@ -103,6 +103,17 @@ const std::vector<ImageSetting>& imageSettings()
         {"energyCompensation", "microfacet energy compensation", "--no-energy-compensation",
          [](const RenderSettings& s) { return onOff(s.energyCompensation); },
          [](RenderSettings& s, const std::string& t) { return readOnOff(t, s.energyCompensation); }},
+        {"masking", "microfacet masking-shadowing", "--masking",
+         [](const RenderSettings& s) {
+             return std::string(s.masking == MaskingModel::Separable ? "separable" : "correlated");
+         },
+         [](RenderSettings& s, const std::string& t) {
+             if (t != "separable" && t != "correlated")
+                 return false;
+             s.masking = t == "separable" ? MaskingModel::Separable
+                                          : MaskingModel::HeightCorrelated;
+             return true;
+         }},
         {"sampler", "sampler", "--sampler",
          [](const RenderSettings& s) {
              return std::string(s.sampler == SamplerKind::Sobol ? "sobol" : "independent");

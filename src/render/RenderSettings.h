@@ -7,6 +7,11 @@ namespace render {
 
 enum class FresnelModel { Schlick, Exact };
 
+// Smith's masking-shadowing of the microfacet materials: height-correlated (Heitz 2014, the
+// default) or the separable product G1(wo) G1(wi), which renderers such as Mitsuba 3 use; the
+// second only to compare with them.
+enum class MaskingModel { HeightCorrelated, Separable };
+
 // Where a path's random decisions come from (shaders/modules/sampler.glsl): every one from
 // the sample's own random stream, or the first bounces' from Owen-scrambled Sobol points.
 enum class SamplerKind { Independent, Sobol };
@@ -39,6 +44,7 @@ struct RenderSettings {
     // more than once, which the single-scattering GGX model loses (Turquin 2019; see
     // shaders/modules/microfacet.glsl). Off only to compare with renderers without it.
     bool energyCompensation = true;
+    MaskingModel masking = MaskingModel::HeightCorrelated;
     SamplerKind sampler = SamplerKind::Sobol;
     // Rays that escape see the scene's environment; off, they see black. Takes effect only
     // in a shader that reads the environment from a uniform (switchableEnvironment).

@@ -209,6 +209,7 @@ void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
     setInt(program, "uRayCulling", settings.rayCulling ? 1 : 0);
     setInt(program, "uExactFresnel", settings.dielectricFresnel == FresnelModel::Exact ? 1 : 0);
     setInt(program, "uEnergyCompensation", settings.energyCompensation ? 1 : 0);
+    setInt(program, "uSeparableMasking", settings.masking == MaskingModel::Separable ? 1 : 0);
     setInt(program, "uSampler", settings.sampler == SamplerKind::Sobol ? 1 : 0);
     glUniform1ui(program.uniformLocation("uSphereLightPieces"), uniforms.sphereLightPieces);
     glUniform2ui(program.uniformLocation("uSeed"), static_cast<GLuint>(settings.seed),

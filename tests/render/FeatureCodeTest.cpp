@@ -18,7 +18,9 @@ namespace {
 
 using namespace testing_support;
 
-// The uniforms only the rough conductor (and its compensation) and the thin lens read.
+// The uniforms only the microfacet materials, the rough conductor (and its compensation) and
+// the thin lens read.
+const std::vector<std::string> kMicrofacetUniforms = {"uSeparableMasking"};
 const std::vector<std::string> kConductorUniforms = {"uEnergyCompensation", "uFinishConductors"};
 const std::vector<std::string> kLensUniforms = {"uLensRadius", "uFocusDistance"};
 
@@ -46,6 +48,7 @@ std::string ball(const std::string& camera, const std::string& finish)
 TEST(FeatureCode, AClassicSceneCompilesNoRoughMaterialAndNoLens)
 {
     const scene::Scene scene = sceneFromText(ball("", "0 0 0  20 0 0 0"));
+    EXPECT_TRUE(activeOf(scene, kMicrofacetUniforms).empty());
     EXPECT_TRUE(activeOf(scene, kConductorUniforms).empty());
     EXPECT_TRUE(activeOf(scene, kLensUniforms).empty());
 }
@@ -57,9 +60,10 @@ TEST(FeatureCode, ARoughConductorCompilesItsCompensationButNoLens)
     EXPECT_TRUE(activeOf(scene, kLensUniforms).empty());
 }
 
-TEST(FeatureCode, ARoughDielectricCompilesNoConductor)
+TEST(FeatureCode, ARoughDielectricCompilesTheMicrofacetsButNoConductor)
 {
     const scene::Scene scene = sceneFromText(ball("", "rough_dielectric 0.3 1.5"));
+    EXPECT_EQ(activeOf(scene, kMicrofacetUniforms), kMicrofacetUniforms);
     EXPECT_TRUE(activeOf(scene, kConductorUniforms).empty());
 }
 
@@ -67,6 +71,7 @@ TEST(FeatureCode, ALensCompilesTheLensAlone)
 {
     const scene::Scene scene = sceneFromText(ball("lens 0.1 5", "0 0 0  0 0 0 0"));
     EXPECT_EQ(activeOf(scene, kLensUniforms), kLensUniforms);
+    EXPECT_TRUE(activeOf(scene, kMicrofacetUniforms).empty());
     EXPECT_TRUE(activeOf(scene, kConductorUniforms).empty());
 }
 

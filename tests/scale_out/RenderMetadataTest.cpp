@@ -61,6 +61,7 @@ settingChanges()
             {"--no-mis", [](render::RenderSettings& s) { s.multipleImportanceSampling = false; }},
             {"--fresnel", [](render::RenderSettings& s) { s.dielectricFresnel = render::FresnelModel::Exact; }},
             {"--no-energy-compensation", [](render::RenderSettings& s) { s.energyCompensation = false; }},
+            {"--masking", [](render::RenderSettings& s) { s.masking = render::MaskingModel::Separable; }},
             {"--sampler", [](render::RenderSettings& s) { s.sampler = render::SamplerKind::Independent; }},
             {"--exact-geometry", [](render::RenderSettings& s) { s.exactGeometry = true; }},
             {"--no-specialize", [](render::RenderSettings& s) { s.variant = render::ShaderVariant::General; }},
