@@ -7,7 +7,7 @@
 // of its GLSL functions, whether it scatters into a single direction, and whether it is a
 // microfacet model (GGX, with a roughness: shaders/modules/microfacet.glsl). The enum, the
 // parser's finish keywords, the shaders' codes (MATERIAL_<KIND>, as generated #defines), the
-// feature switches, the shaders' dispatchers over materials (render/KindDispatchers.cpp)
+// feature switches, the shaders' dispatchers over materials (shadergen/KindDispatchers.cpp)
 // and the names in `--features` all come from this list.
 //
 // Adding a material: a row here (with its reader in Materials.cpp if it has a keyword), its

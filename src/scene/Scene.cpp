@@ -2,6 +2,16 @@
 
 namespace scene {
 
+bool sameCamera(const Camera& a, const Camera& b)
+{
+    const bool sameLens =
+        a.lens.has_value() == b.lens.has_value() &&
+        (!a.lens || (a.lens->apertureRadius == b.lens->apertureRadius &&
+                     a.lens->focusDistance == b.lens->focusDistance));
+    return a.eye == b.eye && a.target == b.target && a.up == b.up &&
+           a.verticalFieldOfViewDegrees == b.verticalFieldOfViewDegrees && sameLens;
+}
+
 CameraFrame cameraFrame(const Camera& camera)
 {
     // In double: target - eye, and its squared length, can overflow a float for points the

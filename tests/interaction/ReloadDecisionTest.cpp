@@ -9,10 +9,10 @@ namespace interaction_tests {
 namespace {
 
 using render::decideReload;
-using render::EnvironmentBinding;
-using render::generateSceneShaderCode;
+using shadergen::EnvironmentBinding;
+using shadergen::generateSceneShaderCode;
 using render::ReloadDecision;
-using render::ShaderVariant;
+using settings::ShaderVariant;
 using scene_tests::parse;
 namespace fs = std::filesystem;
 
@@ -149,6 +149,23 @@ TEST(ReloadDecision, TheCameraIsReplacedOnlyWhenItsLinesChanged)
     EXPECT_FALSE(render::cameraLinesChanged(parse(scene()).camera,
                                             parse(scene("0 1 4", "0.2 0.2 0.2")).camera));
     EXPECT_TRUE(render::cameraLinesChanged(parse(scene()).camera, parse(scene("0 1 5")).camera));
+}
+
+// The thin lens is written on the camera line: a lens added, removed or changed is the
+// camera changed.
+TEST(ReloadDecision, ALensEditedIsTheCameraChanged)
+{
+    auto withLens = [](const std::string& lens) {
+        std::string text = scene();
+        text.replace(text.find("45\n"), 3, "45 " + lens + "\n");
+        return text;
+    };
+    EXPECT_TRUE(render::cameraLinesChanged(parse(scene()).camera,
+                                           parse(withLens("lens 0.1 4")).camera));
+    EXPECT_TRUE(render::cameraLinesChanged(parse(withLens("lens 0.1 4")).camera,
+                                           parse(withLens("lens 0.2 4")).camera));
+    EXPECT_FALSE(render::cameraLinesChanged(parse(withLens("lens 0.1 4")).camera,
+                                            parse(withLens("lens 0.1 4")).camera));
 }
 
 }  // namespace

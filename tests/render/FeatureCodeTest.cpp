@@ -4,7 +4,7 @@
 // reads uniforms of its own; the GL reports a uniform as active only when code that the
 // compiler kept reads it, so the uniforms say whether the code is there.
 #include "render/PathTracerProgram.h"
-#include "render/SceneShaderGenerator.h"
+#include "shadergen/SceneShaderGenerator.h"
 #include "support/RenderRun.h"
 #include "support/TestPaths.h"
 
@@ -27,8 +27,8 @@ const std::vector<std::string> kLensUniforms = {"uLensRadius", "uFocusDistance"}
 std::vector<std::string> activeOf(const scene::Scene& scene,
                                   const std::vector<std::string>& uniforms)
 {
-    const render::SceneShaderCode code =
-        render::generateSceneShaderCode(scene, render::ShaderBuild{});
+    const shadergen::SceneShaderCode code =
+        shadergen::generateSceneShaderCode(scene, shadergen::ShaderBuild{});
     const auto shaders = sourceDirectory() / "shaders";
     const render::PathTracerProgram program(render::assemblePathTracerSource(code, shaders),
                                             shaders);

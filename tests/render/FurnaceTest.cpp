@@ -251,7 +251,7 @@ SphereMean meanOnSphere(const scene::Scene& scene, const RenderedImage& image)
 
 RenderedImage renderFurnace(const scene::Scene& scene, bool energyCompensation, int samples)
 {
-    render::RenderSettings settings = settingsWithSeed(11);
+    settings::RenderSettings settings = settingsWithSeed(11);
     settings.energyCompensation = energyCompensation;
     return renderScene(scene, kWidth, kHeight, samples, settings);
 }
