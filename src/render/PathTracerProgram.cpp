@@ -63,6 +63,7 @@ ShaderSource assemblePathTracerSource(const SceneShaderCode& code, const fs::pat
     source.add("<generated: the BSDF dispatchers over the materials>", materialDispatchers());
     module("ray_queries.glsl");
     if (code.exactGeometry) {
+        module("exact_csg.glsl");
         source.add("<generated: the scene's exact intersections>", code.exactFunctions);
         module("ray_queries_exact.glsl");
     } else {
