@@ -3,6 +3,7 @@
 // crossings finds the solid (silhouettes and holes, against the CPU's own sphere tracing of
 // the solid's exact distance in double precision), and which way its normals point (a solid
 // that a CSG block cuts shades as the same solid written as one shape, with the same seed).
+#include "support/CsgSolids.h"
 #include "support/PinholeCamera.h"
 #include "support/RenderRun.h"
 
@@ -12,7 +13,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace render_tests {
 namespace {
@@ -22,54 +22,11 @@ using namespace testing_support;
 constexpr int kWidth = 64;
 constexpr int kHeight = 48;
 
-double boxDistance(const glm::dvec3& q, const glm::dvec3& halfExtents)
-{
-    const glm::dvec3 outside = glm::abs(q) - halfExtents;
-    return glm::length(glm::max(outside, glm::dvec3(0.0))) +
-           std::min(std::max(outside.x, std::max(outside.y, outside.z)), 0.0);
-}
-
-// A box scooped by a sphere from its top and drilled through along z by a cylinder, so that
-// the sky shows through the hole: the scene's
-//   difference { box 0 0.6 0  1 0.6 0.7   sphere 0 1.4 0  0.8
-//                translate -0.45 0.45 0 rotate 1 0 0 90 cylinder 0 0 0  0.25 1.5 }
-struct DrilledScoopedBox {
-    double distance(const glm::dvec3& p) const
-    {
-        const double box = boxDistance(p - glm::dvec3(0.0, 0.6, 0.0), {1.0, 0.6, 0.7});
-        const double sphere = glm::length(p - glm::dvec3(0.0, 1.4, 0.0)) - 0.8;
-        // The cylinder's axis, y in its own frame, is z in the world's.
-        const glm::dvec3 q = p - glm::dvec3(-0.45, 0.45, 0.0);
-        const double drill = std::max(glm::length(glm::dvec2(q.x, q.y)) - 0.25, std::abs(q.z) - 1.5);
-        return std::max(box, std::max(-sphere, -drill));
-    }
-};
-const char* const kDrilledScoopedBox =
-    "difference {\n box 0 0.6 0  1 0.6 0.7\n sphere 0 1.4 0  0.8\n"
-    " translate -0.45 0.45 0 rotate 1 0 0 90 cylinder 0 0 0  0.25 1.5\n}";
-
-// The seed's rounded cube turned about y: intersection { sphere 0 0 0 1.3  box 0 0 0 1 1 1 }.
-struct TurnedRoundedCube {
-    glm::dmat3 toLocal;
-    double distance(const glm::dvec3& p) const
-    {
-        const glm::dvec3 q = toLocal * p;
-        return std::max(glm::length(q) - 1.3, boxDistance(q, glm::dvec3(1.0)));
-    }
-};
-
 // Whether the ray meets the solid, by sphere tracing its exact distance in double precision.
 template <typename Solid>
 bool meets(const Solid& solid, const glm::dvec3& origin, const glm::dvec3& direction)
 {
-    double t = 0.0;
-    for (int step = 0; step < 100000 && t < 200.0; ++step) {
-        const double d = solid.distance(origin + t * direction);
-        if (d < 1e-9)
-            return true;
-        t += std::max(d, 1e-7);
-    }
-    return false;
+    return sphereTracedCrossing(solid, origin, direction) >= 0.0;
 }
 
 std::string blackSolidAgainstTheSky(const std::string& camera, const std::string& solid)
@@ -109,7 +66,7 @@ TEST(ExactCsg, ADrilledAndScoopedBoxIsMetWithinItsSilhouetteAndSeenThroughItsHol
 {
     // From the front, a little above: the scoop and the hole both show.
     expectExactSilhouette(blackSolidAgainstTheSky("0 1.2 3.6\n0 0.5 0\n0 1 0\n45\n",
-                                                  kDrilledScoopedBox),
+                                                  DrilledScoopedBox::kShape),
                           DrilledScoopedBox{});
 }
 
@@ -119,7 +76,7 @@ TEST(ExactCsg, AnIntersectionUnderATransformIsMetWithinItsSilhouette)
     expectExactSilhouette(
         blackSolidAgainstTheSky("2.5 1.8 3\n0 0 0\n0 1 0\n45\n",
                                 "rotate 0 1 0 30 intersection { sphere 0 0 0 1.3  box 0 0 0 1 1 1 }"),
-        TurnedRoundedCube{glm::transpose(turn)});
+        RoundedCube{glm::dvec3(0.0), glm::transpose(turn)});
 }
 
 // A lit grey solid on a floor, seen under a point light and the sky: every face's normal
