@@ -407,7 +407,7 @@ def creases_section(cache, image_dir, link_dir, args):
         "(`bench/scenes/creases/`): a CSG difference and a CSG intersection on a floor in the "
         "open, a smooth union in a closed room, a user SDF against a wall. Where the solid is a "
         "sharp CSG block of shapes with a closed form, the reference is `--exact-geometry`, "
-        "which walks the leaves' exact crossings (render/ExactCsgIntersection.h); where it has "
+        "which walks the leaves' exact crossings (shadergen/ExactCsgIntersection.h); where it has "
         "none (smooth unions, user SDFs), the reference is the **converged march**: the default "
         "renderer at a sixteenth of the default hit tolerance (`--hit-tolerance 0.015625 "
         "--max-steps 4096`). Default renders with seeds 1 and 2 up to "

@@ -1,4 +1,4 @@
-// What the crossing walks of CSG solids (render/ExactCsgIntersection.h, generated into the
+// What the crossing walks of CSG solids (shadergen/ExactCsgIntersection.h, generated into the
 // --exact-geometry shader) share: where the search for the next leaf crossing starts, a point
 // beyond every crossing, and the outward normal.
 

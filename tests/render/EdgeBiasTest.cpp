@@ -189,15 +189,15 @@ RenderedImage renderWithOtherProgram(const std::string& program, const std::stri
 
 // The traced render's accuracy settings: the default's unless a test says otherwise.
 struct MarchSettings {
-    float hitTolerance = render::RenderSettings{}.hitTolerance;
-    int maxMarchSteps = render::RenderSettings{}.maxMarchSteps;
+    float hitTolerance = settings::RenderSettings{}.hitTolerance;
+    int maxMarchSteps = settings::RenderSettings{}.maxMarchSteps;
 };
 
 RenderPair renderPair(const std::string& sceneText, std::uint64_t seed,
                       const MarchSettings& march = {})
 {
     const scene::Scene scene = sceneFromText(sceneText);
-    render::RenderSettings settings = settingsWithSeed(seed);
+    settings::RenderSettings settings = settingsWithSeed(seed);
     settings.samplesPerFrame = 16;
     settings.hitTolerance = march.hitTolerance;
     settings.maxMarchSteps = march.maxMarchSteps;
@@ -416,7 +416,7 @@ TEST(EdgeBias, FloorAroundASphereRestingOnItMatchesExactIntersectionUnderASphere
 
 // --- marched CSG solids resting on a floor (issue 36) ------------------------------------
 // CSG solids are marched by every render; --exact-geometry meets them by walking their
-// leaves' exact crossings (render/ExactCsgIntersection.h, tests in ExactCsgTest.cpp). Where a
+// leaves' exact crossings (shadergen/ExactCsgIntersection.h, tests in ExactCsgTest.cpp). Where a
 // solid stands on the floor, the one-pixel line of the crease held a band of samples whose
 // normals the gradient's stencil tilted (its taps reached past the solid's bottom edge):
 // 3-4 % too dark over the line at the default tolerance.

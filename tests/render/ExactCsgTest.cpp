@@ -1,4 +1,4 @@
-// CSG solids met exactly by --exact-geometry (render/ExactCsgIntersection.h), the reference
+// CSG solids met exactly by --exact-geometry (shadergen/ExactCsgIntersection.h), the reference
 // the marched CSG solids of every render are judged against: where the walk over the leaves'
 // crossings finds the solid (silhouettes and holes, against the CPU's own sphere tracing of
 // the solid's exact distance in double precision), and which way its normals point (a solid
@@ -40,7 +40,7 @@ template <typename Solid>
 void expectExactSilhouette(const std::string& sceneText, const Solid& solid)
 {
     const scene::Scene scene = sceneFromText(sceneText);
-    render::RenderSettings settings = settingsWithSeed(3);
+    settings::RenderSettings settings = settingsWithSeed(3);
     settings.exactGeometry = true;
     const RenderedImage image = renderScene(scene, kWidth, kHeight, 8, settings);
     const PinholeCamera camera(scene.camera, kWidth, kHeight);
@@ -92,7 +92,7 @@ std::string litSolidOnAFloor(const std::string& solid)
 // images agree to rounding wherever the two descriptions are one solid.
 void expectSameImage(const std::string& written, const std::string& cut)
 {
-    render::RenderSettings settings = settingsWithSeed(5);
+    settings::RenderSettings settings = settingsWithSeed(5);
     settings.exactGeometry = true;
     const RenderedImage a = renderScene(sceneFromText(written), kWidth, kHeight, 16, settings);
     const RenderedImage b = renderScene(sceneFromText(cut), kWidth, kHeight, 16, settings);
