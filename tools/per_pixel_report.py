@@ -280,10 +280,11 @@ def exact_section(cache, scenes, image_dir, link_dir, args):
         "",
         f"The reference is the program itself with `--exact-geometry`: spheres, polyhedra, "
         f"boxes, capped cylinders, disks, cones, tori no thinner than 1:10 and user SDFs that "
-        f"declare an `@intersect` function met in closed form, with the same light transport, "
-        f"so that the difference is the sphere tracer's geometry alone. Scenes with a CSG "
-        f"block, a rounded box, a thinner torus or another user SDF have no such reference and "
-        f"are left out. Each scene is "
+        f"declare an `@intersect` function met in closed form, and sharp CSG blocks of these "
+        f"met by walking their leaves' crossings, with the same light transport, "
+        f"so that the difference is the sphere tracer's geometry alone. Scenes with a smoothed "
+        f"CSG block, a rounded box, a thinner torus or another user SDF have no such reference "
+        f"and are left out. Each scene is "
         f"rendered at {args.size[0]}x{args.size[1]}: by default with seeds 1 and 2 up to "
         f"{LADDER[-1]} spp, and exactly with seeds 11 and 12 at {args.exact_spp} spp each.",
         "",
