@@ -166,32 +166,51 @@ SurfaceHit findSurface(vec3 origin, vec3 direction, float insideSign, RayCone co
 // `facingNormal` points to the side the ray arrived from (Surface.facingNormal, which the
 // BSDFs sampled against): a direction on that side stays in the region the ray travelled
 // in, one on the other side crosses into the other region. The offset point can land
-// beyond another surface, in a solid the ray never entered: near an edge or a corner (an
-// offset from a room's wall, out through the next wall, would then see the sky), or along a
-// grazing direction inside a concave surface. Then the offset is retried along the normal,
-// once, and twice as far; failing that the path ends there.
+// beyond another surface, in a solid the ray never entered: in the crease where a solid
+// stands on a floor or touches a wall, near an edge or a corner of a room, or along a
+// grazing direction inside a concave surface. Then the offset is taken again, shorter
+// (kOffsetShrinks times, by kOffsetShrink each): in an acute crease (a ball or a rounded
+// solid resting on the floor) the gap narrows below two tolerances over most of a pixel,
+// and every path from there used to end or start on the wrong side: the crease's line came
+// out 14 % too dark (tests/render/EdgeBiasTest.cpp). A ray that starts nearer its surface
+// than the tolerance stops at once and is marched on as a near miss (findSurface). Failing
+// all of those the offset is retried along the normal, once, and twice as far; failing
+// that the path ends there.
 // `containing` receives the object the new ray starts inside (-1 outside every object);
 // its march starts at its origin.
 const float kMinimumSpawnCosine = 0.0625;
 const int kMaxShadowCrossings = 32;
+const int kOffsetShrinks = 3;
+const float kOffsetShrink = 0.25;
+
+// The point `clearance` off the surface at p (normal n, towards the side the ray leaves
+// to) along unit `direction`, whose cosine with n is `cosLeaving` (>= 0): along the
+// direction, but for grazing directions partly along the normal. `along` receives how far
+// along the direction it lies.
+vec3 offsetAlongRay(vec3 p, vec3 n, vec3 direction, float cosLeaving, float clearance,
+                    out float along)
+{
+    along = clearance / max(cosLeaving, kMinimumSpawnCosine);
+    float normalPart = max(0.0, clearance - along * cosLeaving);
+    return p + direction * along + n * normalPart;
+}
 
 bool spawn(vec3 p, vec3 facingNormal, vec3 direction, float tolerance, int object,
            inout float insideSign, out vec3 origin, out float start, out int containing)
 {
     start = 0.0;
-    const float kMinimumCosine = kMinimumSpawnCosine;
     float cosLeaving = dot(direction, facingNormal);
     bool crosses = cosLeaving < 0.0;
-    float side = crosses ? -1.0 : 1.0;
+    vec3 leaving = crosses ? -facingNormal : facingNormal;
     float expectedSign = crosses ? -insideSign : insideSign;
     float clearance = 2.0 * tolerance;
-    float along = clearance / max(abs(cosLeaving), kMinimumCosine);
-    float normalPart = max(0.0, clearance - along * abs(cosLeaving));
-    for (int attempt = 0; attempt < 3; ++attempt) {
-        if (attempt == 0)
-            origin = p + direction * along + facingNormal * (side * normalPart);
+    float along;
+    for (int attempt = 0; attempt <= kOffsetShrinks + 2; ++attempt) {
+        if (attempt <= kOffsetShrinks)
+            origin = offsetAlongRay(p, leaving, direction, abs(cosLeaving),
+                                    clearance * pow(kOffsetShrink, float(attempt)), along);
         else
-            origin = p + facingNormal * (side * float(attempt) * clearance);
+            origin = p + leaving * (float(attempt - kOffsetShrinks) * clearance);
         COUNT_WORK(workEvaluations, 1);
         if (expectedSign * sceneDistanceAndObject(origin, containing) > 0.0) {
             insideSign = expectedSign;
@@ -227,18 +246,20 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
     // Off the surface along wi, as spawn offsets rays: the segment's line still passes
     // through the shading point, so what it sees of the light is what the point sees (an
     // offset along the normal raises the point, and shadows near contacts and edges shift
-    // by it). Only at grazing directions is part of the offset along the normal.
+    // by it). Only at grazing directions is part of the offset along the normal. Where the
+    // offset carries the origin into a solid (the crease where a solid stands on a floor, a
+    // room's corner), the segment starts nearer the surface, as spawn's rays do; it would
+    // otherwise count as blocked.
     COUNT_WORK(workShadowRays, 1);
     float clearance = 2.0 * tolerance;
     float cosLeaving = dot(wi, s.facingNormal);
-    float along = clearance / max(cosLeaving, kMinimumSpawnCosine);
-    float normalPart = max(0.0, clearance - along * cosLeaving);
+    float along;
+    vec3 origin = offsetAlongRay(s.position, s.facingNormal, wi, cosLeaving, clearance, along);
     if (target < 0 && distance <= along)
         return vec3(0.0);
-    vec3 origin = s.position + wi * along + s.facingNormal * normalPart;
     float maxDistance = distance - along;
+    int shrinks = 0;
     vec3 transmittance = vec3(1.0);
-    RayCulling culling = sceneRayCulling(origin, wi, tolerance, 0.0);
     // Shapes met exactly, which marches leave out, block where the segment crosses one;
     // index-1 ones only tint, and are passed one crossing after another.
     float from = 0.0;
@@ -248,6 +269,15 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
         exactSurfacesIntersect(origin, wi, from, -1, wall);
         if (wall.object < 0 || wall.object == target)
             break;
+        // The segment leaves a solid met exactly before anything else: the offset put the
+        // origin inside it.
+        if (from == 0.0 && shrinks < kOffsetShrinks && dot(wall.normal, wi) > 0.0) {
+            ++shrinks;
+            clearance *= kOffsetShrink;
+            origin = offsetAlongRay(s.position, s.facingNormal, wi, cosLeaving, clearance, along);
+            maxDistance = distance - along;
+            continue;
+        }
         if (!isNullInterface(wall.object))
             return vec3(0.0);
 #if HAS_NULL_INTERFACES
@@ -256,6 +286,8 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
         from = wall.t + tolerance;
 #endif
     }
+    RayCulling culling = sceneRayCulling(origin, wi, tolerance, 0.0);
+    float culledFrom = along;  // where along wi from the surface the culling was measured
 #if HAS_SPHERE_LIGHTS
     if (insideSign > 0.0) {
         culling.mask &= ~uSphereLightPieces;
@@ -271,7 +303,8 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
     return transmittance;
 #else
     float clearDistance = min(maxDistance, culling.escapeDistance);
-    float stopTolerance = tolerance;
+    // A segment that starts nearer its surface than the tolerance would stop there at once.
+    float stopTolerance = min(tolerance, 0.5 * clearance);
     int retries = 0;
     int stepsLeft = uMaxMarchSteps;
     float t = 0.0;
@@ -284,6 +317,15 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
             return transmittance;
         if (!(radius < stopTolerance))
             return vec3(0.0);  // the step budget is spent
+        // The origin is inside a marched solid: the offset fell into a crease (see above).
+        if (t == 0.0 && radius < 0.0 && shrinks < kOffsetShrinks) {
+            ++shrinks;
+            clearance *= kOffsetShrink;
+            origin = offsetAlongRay(s.position, s.facingNormal, wi, cosLeaving, clearance, along);
+            clearDistance = min(distance - along, culling.escapeDistance + culledFrom - along);
+            stopTolerance = min(stopTolerance, 0.5 * clearance);
+            continue;
+        }
         --stepsLeft;
         vec3 p = origin + t * wi;
 #if HAS_NULL_INTERFACES || HAS_SPHERE_LIGHTS

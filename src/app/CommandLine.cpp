@@ -411,8 +411,9 @@ shader:
                         cannot come near is exact; this only shows what it saves)
   --exact-geometry      find surfaces by exact ray intersection instead of sphere tracing
                         (spheres, polyhedra, boxes, cylinders, disks, cones, tori no thinner
-                        than 1:10, user SDFs with an @intersect function): the reference for
-                        the sphere tracer's geometric error (docs/ACCURACY.md)
+                        than 1:10, user SDFs with an @intersect function, and union,
+                        intersection and difference blocks of these but disks): the
+                        reference for the sphere tracer's geometric error (docs/ACCURACY.md)
 
   --help                this text
   --version             the program's version

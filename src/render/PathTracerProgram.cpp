@@ -65,6 +65,7 @@ shadergen::ShaderSource assemblePathTracerSource(const shadergen::SceneShaderCod
     source.add("<generated: the BSDF dispatchers over the materials>", shadergen::materialDispatchers());
     module("ray_queries.glsl");
     if (code.exactGeometry) {
+        module("exact_csg.glsl");
         source.add("<generated: the scene's exact intersections>", code.exactFunctions);
         module("ray_queries_exact.glsl");
     } else {
