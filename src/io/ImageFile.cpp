@@ -2,18 +2,19 @@
 
 #include "io/ImageFormats.h"
 #include "io/OutputFiles.h"
+#include "io/RegularFile.h"
 
+#include <OpenEXR/ImfHeader.h>
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
-#include <unistd.h>
 
 namespace io {
 
@@ -21,76 +22,155 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool isPfm(const fs::path& path)
+[[noreturn]] void refuseToRead(const fs::path& path, const std::string& reason)
 {
-    return lowerCaseExtension(path) == ".pfm";
+    throw std::runtime_error("cannot read image " + path.string() + ": " + reason);
 }
 
-// OpenImageIO says only that it could not open the file; the system says why.
-std::unique_ptr<OIIO::ImageInput> openForReading(const fs::path& path)
+// OpenEXR sizes its table of chunk offsets from the header as it opens a file, before
+// OpenImageIO hands the header over: its own limit keeps a crafted data window from asking
+// for gigabytes there.
+void limitOpenExrHeaders()
 {
-    if (::access(path.c_str(), R_OK) != 0)
-        throw std::runtime_error("cannot read image " + path.string() + ": " +
-                                 std::strerror(errno));
-    auto input = OIIO::ImageInput::open(path.string());
-    if (!input)
-        throw std::runtime_error("cannot read image " + path.string() + ": " + OIIO::geterror());
-    return input;
+    static std::once_flag once;
+    std::call_once(once, [] {
+        Imf::Header::setMaxImageSize(kLargestSideRead, kLargestSideRead);
+        Imf::Header::setMaxTileSize(kLargestSideRead, kLargestSideRead);
+    });
 }
 
-// Messages name the user's path: a library's message about the temporary file is rewritten.
-std::string aboutDestination(std::string message, const fs::path& file,
-                             const fs::path& destination)
+// The limits of ImageFile.h, from the header alone.
+void checkWithinLimits(const fs::path& path, const OIIO::ImageSpec& spec, std::int64_t fileSize)
 {
-    const std::string from = file.string();
-    for (std::size_t at; !from.empty() && (at = message.find(from)) != std::string::npos;)
-        message.replace(at, from.size(), destination.string());
-    return message;
+    if (spec.deep)
+        refuseToRead(path, "it holds deep data, not an image");
+    if (spec.depth != 1 || spec.z != 0)
+        refuseToRead(path, "it holds a volume, not an image");
+    if (spec.x != 0 || spec.y != 0)
+        refuseToRead(path, "its data window starts at (" + std::to_string(spec.x) + ", " +
+                               std::to_string(spec.y) + "), not at (0, 0)");
+    const std::string size = std::to_string(spec.width) + "x" + std::to_string(spec.height);
+    if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1)
+        refuseToRead(path, "it holds no pixels (" + size + ", " +
+                               std::to_string(spec.nchannels) + " channels)");
+    if (spec.width > kLargestSideRead || spec.height > kLargestSideRead)
+        refuseToRead(path, "its size, " + size + ", is beyond the largest image read (" +
+                               std::to_string(kLargestSideRead) + " pixels a side)");
+    const std::int64_t pixels = static_cast<std::int64_t>(spec.width) * spec.height;
+    if (pixels > kLargestPixelCountRead)
+        refuseToRead(path, "its size, " + size + ", is beyond the largest image read (" +
+                               std::to_string(kLargestPixelCountRead) + " pixels)");
+    if (spec.nchannels > kLargestChannelCountRead)
+        refuseToRead(path, "its " + std::to_string(spec.nchannels) +
+                               " channels are more than the " +
+                               std::to_string(kLargestChannelCountRead) + " read");
+    const std::int64_t bytes = pixels * static_cast<std::int64_t>(spec.pixel_bytes(true));
+    if (bytes > fileSize * kLargestExpansionRead)
+        refuseToRead(path, "its header asks for " + std::to_string(bytes) + " bytes of pixels (" +
+                               size + ") from a file of " + std::to_string(fileSize) +
+                               " bytes, more than " + std::to_string(kLargestExpansionRead) +
+                               " for each byte, which no lossless compression reaches: it is "
+                               "cut short or made up");
 }
 
-// OpenImageIO 2.4 (Debian 12) reads PFM but has no writer for it, so PFM is written here:
+// An image file opened for reading: a regular file, read through the program's own
+// descriptor by the reader of the format its extension names, its header within the limits.
+class UntrustedImage {
+public:
+    explicit UntrustedImage(const fs::path& path)
+        : format_(formatFor(path)), file_(path), proxy_(file_.stream(), OIIO::Filesystem::IOProxy::Read)
+    {
+        if (format_.openImageIoName == "openexr")
+            limitOpenExrHeaders();
+        input_ = OIIO::ImageInput::create(format_.openImageIoName);
+        if (!input_)
+            refuseToRead(path, "OpenImageIO has no reader for " + format_.openImageIoName + ": " +
+                                   OIIO::geterror());
+        OIIO::ImageSpec config;
+        OIIO::Filesystem::IOProxy* proxy = &proxy_;
+        config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+        OIIO::ImageSpec spec;
+        if (!input_->open(path.string(), spec, config))
+            refuseToRead(path, "not a readable " + lowerCaseExtension(path).substr(1) + " file (" +
+                                   input_->geterror() + ")");
+        checkWithinLimits(path, input_->spec(), file_.size());
+    }
+    UntrustedImage(const UntrustedImage&) = delete;
+    UntrustedImage& operator=(const UntrustedImage&) = delete;
+    ~UntrustedImage()
+    {
+        if (input_)
+            input_->close();
+    }
+
+    OIIO::ImageInput& input() { return *input_; }
+
+private:
+    static const ImageFormat& formatFor(const fs::path& path)
+    {
+        try {
+            return imageFormatOf(path);
+        } catch (const std::runtime_error& error) {
+            throw std::runtime_error("cannot read image " + std::string(error.what()));
+        }
+    }
+
+    const ImageFormat& format_;
+    RegularFile file_;
+    OIIO::Filesystem::IOFile proxy_;
+    std::unique_ptr<OIIO::ImageInput> input_;
+};
+
+// OpenImageIO 2.4 (Debian 12) reads PFM but has no writer for it, so PFM is encoded here:
 // "PF" (colour) or "Pf" (grey), size, a negative scale for little-endian floats, then the
 // rows bottom first. The format holds no attributes.
-void writePfm(const fs::path& file, const fs::path& destination, const Image& image)
+std::vector<unsigned char> encodePfm(const fs::path& destination, const Image& image)
 {
     if (image.channels != 3 && image.channels != 1)
         throw std::runtime_error("cannot write " + destination.string() +
                                  ": PFM holds one or three channels");
-    std::ofstream out(file, std::ios::binary);
-    if (!out)
-        throw std::runtime_error("cannot write " + destination.string() + ": " +
-                                 std::strerror(errno));
-    out << (image.channels == 3 ? "PF" : "Pf") << "\n"
-        << image.width << " " << image.height << "\n-1.0\n";
+    const std::string header = std::string(image.channels == 3 ? "PF" : "Pf") + "\n" +
+                               std::to_string(image.width) + " " +
+                               std::to_string(image.height) + "\n-1.0\n";
+    std::vector<unsigned char> bytes(header.begin(), header.end());
+    bytes.reserve(header.size() + image.pixels.size() * 4);
     for (int y = image.height - 1; y >= 0; --y) {
         const float* row = &image.pixels[image.index(0, y, 0)];
         for (int i = 0; i < image.width * image.channels; ++i) {
             std::uint32_t bits;
             std::memcpy(&bits, &row[i], sizeof bits);
-            const unsigned char bytes[4] = {
-                static_cast<unsigned char>(bits), static_cast<unsigned char>(bits >> 8),
-                static_cast<unsigned char>(bits >> 16), static_cast<unsigned char>(bits >> 24)};
-            out.write(reinterpret_cast<const char*>(bytes), 4);
+            for (int shift = 0; shift < 32; shift += 8)
+                bytes.push_back(static_cast<unsigned char>(bits >> shift));
         }
     }
-    out.close();
-    if (!out)
-        throw std::runtime_error("cannot write " + destination.string() + ": " +
-                                 std::strerror(errno));
+    return bytes;
 }
 
-void writeThroughOpenImageIo(const fs::path& file, const fs::path& destination,
-                             const ImageFormat& format, const Image& image,
-                             const std::vector<ImageAttribute>& attributes,
-                             const std::vector<std::string>& channelNames)
+}  // namespace
+
+bool holdsLinearRadiance(const fs::path& path)
 {
-    // The writer is chosen by the destination's extension, whatever the file is called.
-    auto output = OIIO::ImageOutput::create(destination.string());
+    const ImageFormat* format = outputFormatOf(path);
+    return format != nullptr && format->linearRadiance;
+}
+
+std::vector<unsigned char> encodeImage(const fs::path& destination, const Image& image,
+                                       const std::vector<ImageAttribute>& attributes,
+                                       const std::vector<std::string>& channelNames)
+{
+    const ImageFormat* format = outputFormatOf(destination);
+    if (format == nullptr)
+        throw std::runtime_error("cannot write " + destination.string() +
+                                 ": unknown image format");
+    if (lowerCaseExtension(destination) == ".pfm")
+        return encodePfm(destination, image);
+
+    auto output = OIIO::ImageOutput::create(format->openImageIoName);
     if (!output)
         throw std::runtime_error("cannot write " + destination.string() +
                                  ": OpenImageIO has no writer for this format");
     OIIO::ImageSpec spec(image.width, image.height, image.channels,
-                         format.linearRadiance ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+                         format->linearRadiance ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
     if (!channelNames.empty()) {
         if (static_cast<int>(channelNames.size()) != image.channels)
             throw std::logic_error("writing " + destination.string() + ": " +
@@ -103,38 +183,23 @@ void writeThroughOpenImageIo(const fs::path& file, const fs::path& destination,
     }
     for (const ImageAttribute& attribute : attributes)
         spec.attribute(attribute.name, attribute.value);
-    if (!output->open(file.string(), spec))
+    // Into memory: no library sees the file, so none can lose a failed write (PNG and TIFF
+    // report none) or end the process over one (JPEG's library exits). The program writes
+    // the bytes itself and checks every call (io/OutputFiles.cpp).
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput memory(bytes);
+    OIIO::Filesystem::IOProxy* proxy = &memory;
+    spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    if (!output->open(destination.string(), spec))
         throw std::runtime_error("cannot write " + destination.string() + ": " +
-                                 aboutDestination(output->geterror(), file, destination));
+                                 output->geterror());
     const bool written = output->write_image(OIIO::TypeDesc::FLOAT, image.pixels.data());
     const std::string writeError = written ? std::string() : output->geterror();
     const bool closed = output->close();
     if (!written || !closed)
-        throw std::runtime_error(
-            "cannot write " + destination.string() + ": " +
-            aboutDestination(written ? output->geterror() : writeError, file, destination));
-}
-
-}  // namespace
-
-bool holdsLinearRadiance(const fs::path& path)
-{
-    const ImageFormat* format = outputFormatOf(path);
-    return format != nullptr && format->linearRadiance;
-}
-
-void writeImageFile(const fs::path& file, const fs::path& destination, const Image& image,
-                    const std::vector<ImageAttribute>& attributes,
-                    const std::vector<std::string>& channelNames)
-{
-    const ImageFormat* format = outputFormatOf(destination);
-    if (format == nullptr)
-        throw std::runtime_error("cannot write " + destination.string() +
-                                 ": unknown image format");
-    if (isPfm(destination))
-        writePfm(file, destination, image);
-    else
-        writeThroughOpenImageIo(file, destination, *format, image, attributes, channelNames);
+        throw std::runtime_error("cannot write " + destination.string() + ": " +
+                                 (written ? output->geterror() : writeError));
+    return bytes;
 }
 
 void writeImage(const fs::path& path, const Image& image,
@@ -145,16 +210,29 @@ void writeImage(const fs::path& path, const Image& image,
 
 void checkReadableImage(const fs::path& path)
 {
-    openForReading(path)->close();
+    // Textures may be in any format OpenImageIO recognises, but only a regular file is
+    // handed to it: a device or FIFO named like an image would make it read forever.
+    const RegularFile file(path);
+    auto input = OIIO::ImageInput::open(path.string());
+    if (!input)
+        refuseToRead(path, OIIO::geterror());
+    input->close();
+}
+
+ImageHeader readImageHeader(const fs::path& path)
+{
+    UntrustedImage image(path);
+    const OIIO::ImageSpec& spec = image.input().spec();
+    return {spec.width, spec.height, spec.nchannels, image.input().format_name()};
 }
 
 std::optional<std::string> readImageAttribute(const fs::path& path, const std::string& name)
 {
-    const auto input = openForReading(path);
-    const OIIO::ParamValue* value = input->spec().find_attribute(name);
-    if (value == nullptr)
+    UntrustedImage image(path);
+    const OIIO::ImageSpec& spec = image.input().spec();
+    if (spec.find_attribute(name) == nullptr)
         return std::nullopt;
-    return input->spec().get_string_attribute(name);
+    return spec.get_string_attribute(name);
 }
 
 Image readImage(const fs::path& path)
@@ -170,21 +248,22 @@ int ImageFileContents::channelIndex(const std::string& name) const
 
 ImageFileContents readImageFile(const fs::path& path)
 {
-    const auto input = openForReading(path);
-    const OIIO::ImageSpec& spec = input->spec();
+    UntrustedImage file(path);
+    OIIO::ImageInput& input = file.input();
+    const OIIO::ImageSpec& spec = input.spec();
     ImageFileContents contents;
-    contents.format = input->format_name();
-    contents.image = Image(spec.width, spec.height, spec.nchannels);
+    contents.format = input.format_name();
     contents.channelNames = spec.channelnames;
     for (const OIIO::ParamValue& attribute : spec.extra_attribs)
         contents.attributes.push_back(
             {attribute.name().string(), attribute.type() == OIIO::TypeDesc::STRING
                                             ? std::string(attribute.get_string())
                                             : std::string(spec.metadata_val(attribute))});
-    if (!input->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
-                           contents.image.pixels.data()))
-        throw std::runtime_error("cannot read image " + path.string() + ": " + input->geterror());
-    input->close();
+    // Allocated only now, once the header is known to be within the limits.
+    contents.image = Image(spec.width, spec.height, spec.nchannels);
+    if (!input.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
+                          contents.image.pixels.data()))
+        refuseToRead(path, input.geterror());
     return contents;
 }
 
