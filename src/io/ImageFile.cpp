@@ -1,6 +1,7 @@
 #include "io/ImageFile.h"
 
 #include "io/ImageFormats.h"
+#include "io/OpenExrHeader.h"
 #include "io/OutputFiles.h"
 #include "io/RegularFile.h"
 
@@ -35,7 +36,7 @@ void limitOpenExrHeaders()
     static std::once_flag once;
     std::call_once(once, [] {
         Imf::Header::setMaxImageSize(kLargestSideRead, kLargestSideRead);
-        Imf::Header::setMaxTileSize(kLargestSideRead, kLargestSideRead);
+        Imf::Header::setMaxTileSize(kLargestTileSideRead, kLargestTileSideRead);
     });
 }
 
@@ -64,6 +65,11 @@ void checkWithinLimits(const fs::path& path, const OIIO::ImageSpec& spec, std::i
         refuseToRead(path, "its " + std::to_string(spec.nchannels) +
                                " channels are more than the " +
                                std::to_string(kLargestChannelCountRead) + " read");
+    if (spec.tile_width > kLargestTileSideRead || spec.tile_height > kLargestTileSideRead ||
+        spec.tile_depth > 1)
+        refuseToRead(path, "its tiles, " + std::to_string(spec.tile_width) + "x" +
+                               std::to_string(spec.tile_height) + ", are larger than the " +
+                               std::to_string(kLargestTileSideRead) + " pixels a side read");
     const std::int64_t bytes = pixels * static_cast<std::int64_t>(spec.pixel_bytes(true));
     if (bytes > fileSize * kLargestExpansionRead)
         refuseToRead(path, "its header asks for " + std::to_string(bytes) + " bytes of pixels (" +
@@ -78,16 +84,20 @@ void checkWithinLimits(const fs::path& path, const OIIO::ImageSpec& spec, std::i
 class UntrustedImage {
 public:
     explicit UntrustedImage(const fs::path& path)
-        : format_(formatFor(path)), file_(path), proxy_(file_.stream(), OIIO::Filesystem::IOProxy::Read)
+        : format_(formatFor(path)), file_(path)
     {
-        if (format_.openImageIoName == "openexr")
+        if (format_.openImageIoName == "openexr") {
             limitOpenExrHeaders();
+            checkOpenExrHeader(file_.stream(), file_.size(), path.string());
+        }
+        proxy_ = std::make_unique<OIIO::Filesystem::IOFile>(file_.stream(),
+                                                             OIIO::Filesystem::IOProxy::Read);
         input_ = OIIO::ImageInput::create(format_.openImageIoName);
         if (!input_)
             refuseToRead(path, "OpenImageIO has no reader for " + format_.openImageIoName + ": " +
                                    OIIO::geterror());
         OIIO::ImageSpec config;
-        OIIO::Filesystem::IOProxy* proxy = &proxy_;
+        OIIO::Filesystem::IOProxy* proxy = proxy_.get();
         config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
         OIIO::ImageSpec spec;
         if (!input_->open(path.string(), spec, config))
@@ -117,9 +127,60 @@ private:
 
     const ImageFormat& format_;
     RegularFile file_;
-    OIIO::Filesystem::IOFile proxy_;
+    std::unique_ptr<OIIO::Filesystem::IOFile> proxy_;
     std::unique_ptr<OIIO::ImageInput> input_;
 };
+
+bool isTiled(const OIIO::ImageSpec& spec)
+{
+    return spec.tile_width > 0 && spec.tile_height > 0;
+}
+
+// Converts `rows` rows of `width` pixels of the file's native data (every channel in its own
+// format, rows `sourceRow` bytes apart) into 32-bit floats (8-bit values scaled to [0, 1]),
+// rows `width of the image` floats apart.
+bool convertToFloat(const OIIO::ImageSpec& spec, const unsigned char* source,
+                    std::size_t sourceRow, int width, int rows, float* destination)
+{
+    const auto pixelBytes = static_cast<OIIO::stride_t>(spec.pixel_bytes(true));
+    const auto floatBytes = static_cast<OIIO::stride_t>(sizeof(float));
+    std::size_t offset = 0;
+    for (int c = 0; c < spec.nchannels; ++c) {
+        const OIIO::TypeDesc format = spec.channelformat(c);
+        if (!OIIO::convert_image(1, width, rows, 1, source + offset, format, pixelBytes,
+                                 static_cast<OIIO::stride_t>(sourceRow), OIIO::AutoStride,
+                                 destination + c, OIIO::TypeFloat, spec.nchannels * floatBytes,
+                                 spec.nchannels * floatBytes * spec.width, OIIO::AutoStride))
+            return false;
+        offset += format.size();
+    }
+    return true;
+}
+
+// Rows [y, end) of every channel as 32-bit floats into `band`, read as the file stores them
+// (scan lines, or whole tiles of tile_height rows) and converted here: OpenImageIO 2.4's
+// converting reads set aside 64 MB for any read, however small.
+bool readBand(OIIO::ImageInput& input, int y, int end, float* band,
+              std::vector<unsigned char>& native)
+{
+    const OIIO::ImageSpec& spec = input.spec();
+    const std::size_t pixelBytes = spec.pixel_bytes(true);
+    if (!isTiled(spec)) {
+        native.resize(static_cast<std::size_t>(end - y) * spec.width * pixelBytes);
+        return input.read_native_scanlines(0, 0, y, end, 0, 0, spec.nchannels, native.data()) &&
+               convertToFloat(spec, native.data(), spec.width * pixelBytes, spec.width, end - y,
+                              band);
+    }
+    native.resize(spec.tile_bytes(true));
+    for (int x = 0; x < spec.width; x += spec.tile_width) {
+        if (!input.read_native_tile(0, 0, x, y, 0, native.data()) ||
+            !convertToFloat(spec, native.data(), spec.tile_width * pixelBytes,
+                            std::min(spec.tile_width, spec.width - x), end - y,
+                            band + static_cast<std::size_t>(x) * spec.nchannels))
+            return false;
+    }
+    return true;
+}
 
 // OpenImageIO 2.4 (Debian 12) reads PFM but has no writer for it, so PFM is encoded here:
 // "PF" (colour) or "Pf" (grey), size, a negative scale for little-endian floats, then the
@@ -259,11 +320,22 @@ ImageFileContents readImageFile(const fs::path& path)
             {attribute.name().string(), attribute.type() == OIIO::TypeDesc::STRING
                                             ? std::string(attribute.get_string())
                                             : std::string(spec.metadata_val(attribute))});
-    // Allocated only now, once the header is known to be within the limits.
-    contents.image = Image(spec.width, spec.height, spec.nchannels);
-    if (!input.read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT,
-                          contents.image.pixels.data()))
-        refuseToRead(path, input.geterror());
+    // Read in bands of rows, the pixels growing with each band read: memory follows the
+    // pixels the file holds, not those its header claims (a crafted header within the limits
+    // still asks for up to 4096 times the file's size).
+    Image& image = contents.image;
+    image.width = spec.width;
+    image.height = spec.height;
+    image.channels = spec.nchannels;
+    const std::size_t row = static_cast<std::size_t>(spec.width) * spec.nchannels;
+    const int rowsPerBand = isTiled(spec) ? spec.tile_height : 16;
+    std::vector<unsigned char> native;
+    for (int y = 0; y < spec.height; y += rowsPerBand) {
+        const int end = std::min(spec.height, y + rowsPerBand);
+        image.pixels.resize(static_cast<std::size_t>(end) * row);
+        if (!readBand(input, y, end, image.pixels.data() + y * row, native))
+            refuseToRead(path, input.geterror());
+    }
     return contents;
 }
 

@@ -25,6 +25,9 @@ inline constexpr int kLargestSideRead = 65536;
 inline constexpr std::int64_t kLargestPixelCountRead = std::int64_t(1) << 25;
 inline constexpr int kLargestChannelCountRead = 16;
 inline constexpr std::int64_t kLargestExpansionRead = 4096;
+// A tiled file's tiles are read one at a time, whole: at most 1024 pixels a side (OpenEXR's
+// own are 32 to 256).
+inline constexpr int kLargestTileSideRead = 1024;
 
 // A metadata attribute written into the image file's header where its format holds named
 // attributes (EXR, PNG; PPM, PFM and TIFF drop them). Text for now; typed values can join it.

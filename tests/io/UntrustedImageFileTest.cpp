@@ -2,6 +2,7 @@
 // the reader of the format its extension names.
 #include "io/ImageFile.h"
 
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -79,6 +80,31 @@ TEST_F(UntrustedImageFile, AFileIsReadOnlyAsTheFormatItsExtensionNames)
     const auto [message, seconds] = refusalOf(folder_ / "picture.exr");
     EXPECT_NE(message.find("picture.exr: not a readable exr file"), std::string::npos)
         << message;
+}
+
+// Read in bands of rows (so that memory follows the pixels the file holds): every row comes
+// back in its place, for scan-line files of heights that are no multiple of a band, and for
+// tiled ones.
+TEST_F(UntrustedImageFile, ImagesReadInBandsComeBackWhole)
+{
+    for (const auto& [name, tile] : {std::pair{"lines.exr", 0}, std::pair{"tiles.exr", 16}}) {
+        OIIO::ImageSpec spec(21, 37, 2, OIIO::TypeDesc::FLOAT);
+        if (tile > 0) {
+            spec.tile_width = tile;
+            spec.tile_height = tile;
+        }
+        std::vector<float> pixels(static_cast<std::size_t>(21) * 37 * 2);
+        for (std::size_t i = 0; i < pixels.size(); ++i)
+            pixels[i] = static_cast<float>(i);
+        auto output = OIIO::ImageOutput::create("openexr");
+        ASSERT_TRUE(output && output->open((folder_ / name).string(), spec)) << name;
+        ASSERT_TRUE(output->write_image(OIIO::TypeDesc::FLOAT, pixels.data()));
+        ASSERT_TRUE(output->close());
+        const io::ImageFileContents read = io::readImageFile(folder_ / name);
+        EXPECT_EQ(read.image.width, 21);
+        EXPECT_EQ(read.image.height, 37);
+        EXPECT_EQ(read.image.pixels, pixels) << name;
+    }
 }
 
 }  // namespace

@@ -131,6 +131,20 @@ std::function<void(std::vector<unsigned char>&)> dataWindow(int width, int heigh
     };
 }
 
+// The size of the attribute `name` (a string) made `size`: OpenEXR allocated that much before
+// it found the file too short (the fuzz target's first finding).
+std::function<void(std::vector<unsigned char>&)> attributeSize(const std::string& name,
+                                                               std::uint32_t size)
+{
+    return [=](std::vector<unsigned char>& bytes) {
+        const std::string entry = name + std::string(1, '\0') + "string" + std::string(1, '\0');
+        const auto found = std::search(bytes.begin(), bytes.end(), entry.begin(), entry.end());
+        if (found == bytes.end())
+            throw std::logic_error("the base file has no attribute " + name);
+        write32(bytes, static_cast<std::size_t>(found - bytes.begin()) + entry.size(), size);
+    };
+}
+
 // One bit of the pixel data changed near the file's end (in its last chunk).
 void flipAByteOfThePixels(std::vector<unsigned char>& bytes)
 {
@@ -227,6 +241,10 @@ const std::vector<CraftedRenderFile>& craftedRenderFiles()
         {"data-window-10000x10000-in-20-kb",
          "its size, 10000x10000, is beyond the largest image read (33554432 pixels)", {}, "",
          dataWindow(10000, 10000, 20000)},
+        // An attribute of 1.9 GB in a file of 3 KB.
+        {"attribute-of-1.9-gb",
+         "an attribute says it holds 1885430528 bytes, more than the", {}, "",
+         attributeSize("raytracer:camera", 1885430528u)},
         // Within the largest image, but 512 MB of pixels from 20 KB.
         {"data-window-4000x4000-in-20-kb",
          "asks for 512000000 bytes of pixels (4000x4000) from a file of 20000 bytes", {}, "",
