@@ -274,6 +274,10 @@ void checkReadableImage(const fs::path& path)
     // Textures may be in any format OpenImageIO recognises, but only a regular file is
     // handed to it: a device or FIFO named like an image would make it read forever.
     const RegularFile file(path);
+    if (lowerCaseExtension(path) == ".exr") {
+        limitOpenExrHeaders();
+        checkOpenExrHeader(file.stream(), file.size(), path.string());
+    }
     auto input = OIIO::ImageInput::open(path.string());
     if (!input)
         refuseToRead(path, OIIO::geterror());

@@ -5,12 +5,14 @@
 
 namespace io {
 
-// Walks the header of an OpenEXR file (OpenEXR's file layout: magic number, version and
-// flags, then each part's attributes as name, type, size and value, a part ending with an
-// empty name) and throws std::runtime_error "cannot read image NAME: ..." when an attribute
-// says it is larger than what is left of the file, or a name runs past its limit. OpenEXR
-// allocates an attribute's stated size before it reads it: 1.9 GB for a 3 KB file the fuzz
-// target made (tests/README.md, "Fuzzing"). Leaves `file` at its start.
+// Parses the header of an OpenEXR file with OpenEXR's core library, strictly (every
+// attribute's contents must fill its stated size, every size must fit in the file, the data
+// window and tiles within io/ImageFile.h's limits), and throws std::runtime_error "cannot read
+// image NAME: ..." with its reason when it fails. The C++ library OpenImageIO reads through
+// allocates an attribute's stated size before it reads it, and parses typed attributes by their
+// contents, not their sizes: a channel list that runs past its size put the next attribute's
+// "size" at 1.9 GB, allocated for a file of 2 KB (the EXR fuzz target's findings,
+// tests/README.md, "Fuzzing"). Reads through the file's descriptor; leaves the stream as it was.
 void checkOpenExrHeader(std::FILE* file, std::int64_t fileSize, const std::string& name);
 
 }  // namespace io

@@ -157,12 +157,12 @@ void writeBytes(const fs::path& file, const fs::path& destination,
     }
     if (::fsync(descriptor) != 0)
         fail(errno);
-    struct stat written {};
-    if (::fstat(descriptor, &written) != 0)
+    struct stat onDisk {};
+    if (::fstat(descriptor, &onDisk) != 0)
         fail(errno);
-    if (static_cast<std::uint64_t>(written.st_size) != bytes.size()) {
+    if (static_cast<std::uint64_t>(onDisk.st_size) != bytes.size()) {
         ::close(descriptor);
-        refuse(destination, "the file holds " + std::to_string(written.st_size) + " of the " +
+        refuse(destination, "the file holds " + std::to_string(onDisk.st_size) + " of the " +
                                 std::to_string(bytes.size()) + " bytes written");
     }
     if (::close(descriptor) != 0)
