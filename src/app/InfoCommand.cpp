@@ -2,8 +2,8 @@
 
 #include "app/RenderCommand.h"
 #include "io/ImageFile.h"
-#include "render/RenderFileChecks.h"
-#include "render/RenderMetadata.h"
+#include "film/RenderFileChecks.h"
+#include "film/RenderMetadata.h"
 
 #include <algorithm>
 #include <cmath>
@@ -54,15 +54,15 @@ std::string perPixelSamples(const io::ImageFileContents& file)
 int runInfo(const std::filesystem::path& path)
 {
     const io::ImageFileContents file = io::readImageFile(path);
-    const std::optional<render::RenderMetadata> metadata =
-        render::metadataFromAttributes(file.attributes, path.string());
+    const std::optional<film::RenderMetadata> metadata =
+        film::metadataFromAttributes(file.attributes, path.string());
     if (!metadata)
         throw std::runtime_error(path.string() + " holds no metadata of this program (" +
                                  file.format + "; PPM, PFM, HDR, JPEG and TIFF files hold none)");
     // What info says of the file is only what a render's file holds (merge and --resume refuse
     // the same).
-    render::checkPixelValues(file, *metadata, path.string());
-    render::checkPixelDigest(file, path.string());
+    film::checkPixelValues(file, *metadata, path.string());
+    film::checkPixelDigest(file, path.string());
 
     std::string channels;
     for (const std::string& name : file.channelNames)
@@ -73,16 +73,16 @@ int runInfo(const std::filesystem::path& path)
     printLine("channels", channels);
     printLine("scene", metadata->sceneFile);
     printLine("scene SHA-256", metadata->sceneSha256);
-    printLine("camera", render::formatCamera(metadata->camera));
+    printLine("camera", film::formatCamera(metadata->camera));
     std::string samples = std::to_string(metadata->samplesPerPixel) + " per pixel";
     const std::string pixels = perPixelSamples(file);
     if (!pixels.empty())
         samples += "; " + pixels;
     printLine("samples", samples);
-    printLine("seeds", render::describeSeeds(metadata->sampleRanges));
+    printLine("seeds", film::describeSeeds(metadata->sampleRanges));
     std::string ranges;
-    for (const render::SampleRange& range : metadata->sampleRanges)
-        ranges += (ranges.empty() ? "" : "; ") + render::describeSampleRange(range);
+    for (const film::SampleRange& range : metadata->sampleRanges)
+        ranges += (ranges.empty() ? "" : "; ") + film::describeSampleRange(range);
     printLine("sample ranges", ranges);
     char seconds[64];
     std::snprintf(seconds, sizeof seconds, "%.2f s%s", metadata->renderSeconds,
@@ -95,8 +95,8 @@ int runInfo(const std::filesystem::path& path)
             files += (files.empty() ? "" : ", ") + name;
         printLine("merged from", files);
     }
-    printLine("program", render::describeProgram(*metadata));
-    for (const render::ImageSetting& setting : render::imageSettings())
+    printLine("program", film::describeProgram(*metadata));
+    for (const film::ImageSetting& setting : film::imageSettings())
         printLine(setting.label, setting.text(metadata->settings) + "  (" + setting.option + ")");
     return kExitSuccess;
 }

@@ -40,37 +40,53 @@ void limitOpenExrHeaders()
     });
 }
 
-// The limits of ImageFile.h, from the header alone.
-void checkWithinLimits(const fs::path& path, const OIIO::ImageSpec& spec, std::int64_t fileSize)
+ImageLayout layoutOf(const OIIO::ImageSpec& spec)
 {
-    if (spec.deep)
+    ImageLayout layout;
+    layout.x = spec.x;
+    layout.y = spec.y;
+    layout.width = spec.width;
+    layout.height = spec.height;
+    layout.channels = spec.nchannels;
+    layout.bytesPerPixel = static_cast<std::int64_t>(spec.pixel_bytes(true));
+    layout.tileWidth = spec.tile_width;
+    layout.tileHeight = spec.tile_height;
+    layout.deep = spec.deep;
+    layout.volume = spec.depth != 1 || spec.z != 0 || spec.tile_depth > 1;
+    return layout;
+}
+
+// The limits of ImageFile.h, from the header alone (an OpenEXR file's before the C++ library
+// opens it, then every file's as OpenImageIO reads it).
+void checkWithinLimits(const fs::path& path, const ImageLayout& layout, std::int64_t fileSize)
+{
+    if (layout.deep)
         refuseToRead(path, "it holds deep data, not an image");
-    if (spec.depth != 1 || spec.z != 0)
+    if (layout.volume)
         refuseToRead(path, "it holds a volume, not an image");
-    if (spec.x != 0 || spec.y != 0)
-        refuseToRead(path, "its data window starts at (" + std::to_string(spec.x) + ", " +
-                               std::to_string(spec.y) + "), not at (0, 0)");
-    const std::string size = std::to_string(spec.width) + "x" + std::to_string(spec.height);
-    if (spec.width < 1 || spec.height < 1 || spec.nchannels < 1)
+    if (layout.x != 0 || layout.y != 0)
+        refuseToRead(path, "its data window starts at (" + std::to_string(layout.x) + ", " +
+                               std::to_string(layout.y) + "), not at (0, 0)");
+    const std::string size = std::to_string(layout.width) + "x" + std::to_string(layout.height);
+    if (layout.width < 1 || layout.height < 1 || layout.channels < 1)
         refuseToRead(path, "it holds no pixels (" + size + ", " +
-                               std::to_string(spec.nchannels) + " channels)");
-    if (spec.width > kLargestSideRead || spec.height > kLargestSideRead)
+                               std::to_string(layout.channels) + " channels)");
+    if (layout.width > kLargestSideRead || layout.height > kLargestSideRead)
         refuseToRead(path, "its size, " + size + ", is beyond the largest image read (" +
                                std::to_string(kLargestSideRead) + " pixels a side)");
-    const std::int64_t pixels = static_cast<std::int64_t>(spec.width) * spec.height;
+    const std::int64_t pixels = layout.width * layout.height;
     if (pixels > kLargestPixelCountRead)
         refuseToRead(path, "its size, " + size + ", is beyond the largest image read (" +
                                std::to_string(kLargestPixelCountRead) + " pixels)");
-    if (spec.nchannels > kLargestChannelCountRead)
-        refuseToRead(path, "its " + std::to_string(spec.nchannels) +
+    if (layout.channels > kLargestChannelCountRead)
+        refuseToRead(path, "its " + std::to_string(layout.channels) +
                                " channels are more than the " +
                                std::to_string(kLargestChannelCountRead) + " read");
-    if (spec.tile_width > kLargestTileSideRead || spec.tile_height > kLargestTileSideRead ||
-        spec.tile_depth > 1)
-        refuseToRead(path, "its tiles, " + std::to_string(spec.tile_width) + "x" +
-                               std::to_string(spec.tile_height) + ", are larger than the " +
+    if (layout.tileWidth > kLargestTileSideRead || layout.tileHeight > kLargestTileSideRead)
+        refuseToRead(path, "its tiles, " + std::to_string(layout.tileWidth) + "x" +
+                               std::to_string(layout.tileHeight) + ", are larger than the " +
                                std::to_string(kLargestTileSideRead) + " pixels a side read");
-    const std::int64_t bytes = pixels * static_cast<std::int64_t>(spec.pixel_bytes(true));
+    const std::int64_t bytes = pixels * layout.bytesPerPixel;
     if (bytes > fileSize * kLargestExpansionRead)
         refuseToRead(path, "its header asks for " + std::to_string(bytes) + " bytes of pixels (" +
                                size + ") from a file of " + std::to_string(fileSize) +
@@ -88,7 +104,8 @@ public:
     {
         if (format_.openImageIoName == "openexr") {
             limitOpenExrHeaders();
-            checkOpenExrHeader(file_.stream(), file_.size(), path.string());
+            checkWithinLimits(path, checkOpenExrHeader(file_.stream(), file_.size(), path.string()),
+                              file_.size());
         }
         proxy_ = std::make_unique<OIIO::Filesystem::IOFile>(file_.stream(),
                                                              OIIO::Filesystem::IOProxy::Read);
@@ -103,7 +120,7 @@ public:
         if (!input_->open(path.string(), spec, config))
             refuseToRead(path, "not a readable " + lowerCaseExtension(path).substr(1) + " file (" +
                                    input_->geterror() + ")");
-        checkWithinLimits(path, input_->spec(), file_.size());
+        checkWithinLimits(path, layoutOf(input_->spec()), file_.size());
     }
     UntrustedImage(const UntrustedImage&) = delete;
     UntrustedImage& operator=(const UntrustedImage&) = delete;
@@ -272,7 +289,8 @@ void writeImage(const fs::path& path, const Image& image,
 void checkReadableImage(const fs::path& path)
 {
     // Textures may be in any format OpenImageIO recognises, but only a regular file is
-    // handed to it: a device or FIFO named like an image would make it read forever.
+    // handed to it (a device or FIFO named like an image would make it read forever), and an
+    // EXR only once its header parses strictly (io/OpenExrHeader.h).
     const RegularFile file(path);
     if (lowerCaseExtension(path) == ".exr") {
         limitOpenExrHeaders();

@@ -41,7 +41,7 @@ extern "C" int64_t sizeOf(exr_const_context_t, void* userData)
 
 }  // namespace
 
-void checkOpenExrHeader(std::FILE* file, std::int64_t fileSize, const std::string& name)
+ImageLayout checkOpenExrHeader(std::FILE* file, std::int64_t fileSize, const std::string& name)
 {
     Source source{::fileno(file), fileSize};
     exr_context_initializer_t initializer = EXR_DEFAULT_CONTEXT_INITIALIZER;
@@ -56,13 +56,42 @@ void checkOpenExrHeader(std::FILE* file, std::int64_t fileSize, const std::strin
     initializer.flags = EXR_CONTEXT_FLAG_STRICT_HEADER;
     firstMessage.clear();
     exr_context_t context = nullptr;
-    const exr_result_t result = exr_start_read(&context, name.c_str(), &initializer);
+    exr_result_t result = exr_start_read(&context, name.c_str(), &initializer);
+    ImageLayout layout;
+    exr_attr_box2i_t window{};
+    const exr_attr_chlist_t* channels = nullptr;
+    exr_storage_t storage = EXR_STORAGE_SCANLINE;
+    if (result == EXR_ERR_SUCCESS)
+        result = exr_get_data_window(context, 0, &window);
+    if (result == EXR_ERR_SUCCESS)
+        result = exr_get_channels(context, 0, &channels);
+    if (result == EXR_ERR_SUCCESS)
+        result = exr_get_storage(context, 0, &storage);
+    if (result == EXR_ERR_SUCCESS) {
+        layout.x = window.min.x;
+        layout.y = window.min.y;
+        layout.width = static_cast<std::int64_t>(window.max.x) - window.min.x + 1;
+        layout.height = static_cast<std::int64_t>(window.max.y) - window.min.y + 1;
+        layout.channels = channels->num_channels;
+        for (int c = 0; c < channels->num_channels; ++c)
+            layout.bytesPerPixel += channels->entries[c].pixel_type == EXR_PIXEL_HALF ? 2 : 4;
+        layout.deep = storage == EXR_STORAGE_DEEP_SCANLINE || storage == EXR_STORAGE_DEEP_TILED;
+        if (storage == EXR_STORAGE_TILED) {
+            uint32_t tileWidth = 0;
+            uint32_t tileHeight = 0;
+            result = exr_get_tile_descriptor(context, 0, &tileWidth, &tileHeight, nullptr,
+                                             nullptr);
+            layout.tileWidth = static_cast<int>(tileWidth);
+            layout.tileHeight = static_cast<int>(tileHeight);
+        }
+    }
     exr_finish(&context);
     if (result != EXR_ERR_SUCCESS)
         throw std::runtime_error("cannot read image " + name + ": not a readable exr file (" +
                                  (firstMessage.empty() ? exr_get_default_error_message(result)
                                                        : firstMessage) +
                                  ")");
+    return layout;
 }
 
 }  // namespace io

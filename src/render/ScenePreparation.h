@@ -4,10 +4,10 @@
 // and the fragment shader is assembled. Pure (it reads shader files, never GL state): the
 // renderer, `--features`, `--print-shader` and the benchmarks all prepare a scene here, so
 // they all see the same visible scene, features and source.
-#include "render/RenderSettings.h"
-#include "render/SceneShaderGenerator.h"
+#include "settings/RenderSettings.h"
+#include "shadergen/SceneShaderGenerator.h"
 #include "render/SceneUniforms.h"
-#include "render/ShaderSource.h"
+#include "shadergen/ShaderSource.h"
 #include "scene/Scene.h"
 
 #include <filesystem>
@@ -16,12 +16,12 @@ namespace render {
 
 struct PreparedScene {
     scene::Scene visible;      // without its invisible objects (scene/InvisibleObjects.h)
-    SceneShaderCode code;      // code.features: what the shader is built for
+    shadergen::SceneShaderCode code;      // code.features: what the shader is built for
     SceneUniforms uniforms;    // every number the shader reads from the scene
-    ShaderSource fragmentSource;
+    shadergen::ShaderSource fragmentSource;
 };
 
-PreparedScene prepareScene(const scene::Scene& scene, const ShaderBuild& build,
+PreparedScene prepareScene(const scene::Scene& scene, const shadergen::ShaderBuild& build,
                            const std::filesystem::path& shaderDirectory);
 
 // The project's shaders/ folder (FileLookup::dataDirectory()).

@@ -5,10 +5,10 @@
 // beyond libFuzzer's limit, a hang) is a finding, and so is a file accepted whose values break
 // what the readers promise: a count beyond the largest, or a merge of it that is not finite.
 #include "io/ImageFile.h"
-#include "render/Accumulation.h"
-#include "render/RenderFile.h"
-#include "render/RenderFileChecks.h"
-#include "render/RenderMetadata.h"
+#include "film/Accumulation.h"
+#include "film/RenderFile.h"
+#include "film/RenderFileChecks.h"
+#include "film/RenderMetadata.h"
 
 #include <cmath>
 #include <cstddef>
@@ -46,32 +46,32 @@ bool allFinite(const io::Image& image)
 void readAsInfoDoes(const fs::path& file)
 {
     const io::ImageFileContents contents = io::readImageFile(file);
-    const auto metadata = render::metadataFromAttributes(contents.attributes, file.string());
+    const auto metadata = film::metadataFromAttributes(contents.attributes, file.string());
     if (!metadata)
         return;
-    render::checkPixelValues(contents, *metadata, file.string());
-    render::checkPixelDigest(contents, file.string());
-    render::describeSeeds(metadata->sampleRanges);
-    render::describeProgram(*metadata);
+    film::checkPixelValues(contents, *metadata, file.string());
+    film::checkPixelDigest(contents, file.string());
+    film::describeSeeds(metadata->sampleRanges);
+    film::describeProgram(*metadata);
 }
 
 void readAsMergeAndResumeDo(const fs::path& file)
 {
-    const render::RenderFile render = render::readRenderFile(file);
-    const render::Accumulation& accumulation = render.accumulation;
-    const render::SampleCountSpan span = render::samplesTakenSpan(accumulation);
-    if (span.fewest < 0 || span.most > render::kLargestSampleCount || span.fewest > span.most)
+    const film::RenderFile render = film::readRenderFile(file);
+    const film::Accumulation& accumulation = render.accumulation;
+    const film::SampleCountSpan span = film::samplesTakenSpan(accumulation);
+    if (span.fewest < 0 || span.most > film::kLargestSampleCount || span.fewest > span.most)
         std::abort();
     // A merge of it with itself (counts within the largest) is all finite.
-    if (2 * static_cast<std::int64_t>(span.most) <= render::kLargestSampleCount) {
-        const render::Accumulation merged = render::combineAccumulations({&accumulation, &accumulation});
+    if (2 * static_cast<std::int64_t>(span.most) <= film::kLargestSampleCount) {
+        const film::Accumulation merged = film::combineAccumulations({&accumulation, &accumulation});
         if (!allFinite(merged.estimate) || !allFinite(merged.moments))
             std::abort();
     }
-    if (render::imageDifference(render.metadata, render.metadata))
+    if (film::imageDifference(render.metadata, render.metadata))
         std::abort();
-    render::metadataAttributes(render.metadata);
-    render::sampleStatistics(accumulation);
+    film::metadataAttributes(render.metadata);
+    film::sampleStatistics(accumulation);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 #include "support/CraftedRenderFiles.h"
 
 #include "io/OutputFiles.h"
-#include "render/RenderFileChecks.h"
+#include "film/RenderFileChecks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -267,12 +267,12 @@ void writeCraftedRenderFile(const CraftedRenderFile& crafted, const fs::path& ba
     io::ImageFileContents contents = io::readImageFile(base);
     const bool hadDigest = std::any_of(
         contents.attributes.begin(), contents.attributes.end(),
-        [](const io::ImageAttribute& a) { return a.name == render::kPixelDigestAttribute; });
+        [](const io::ImageAttribute& a) { return a.name == film::kPixelDigestAttribute; });
     if (crafted.editContents) {
         crafted.editContents(contents);
         if (hadDigest)
-            setAttribute(contents, render::kPixelDigestAttribute,
-                         render::pixelDigest(contents.image, contents.channelNames));
+            setAttribute(contents, film::kPixelDigestAttribute,
+                         film::pixelDigest(contents.image, contents.channelNames));
     }
     // The program's own attributes; the format's own (compression, windows) are the writer's.
     std::vector<io::ImageAttribute> attributes;
