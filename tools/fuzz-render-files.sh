@@ -59,10 +59,12 @@ cmake --build "$build" --target render_file_fuzzer
 mkdir -p "$build/render-file-corpus" "$build/render-file-findings"
 cd "$build"
 # Inputs of up to 64 KB (the seeds are 2 to 20 KB); one allocation above 512 MB is a finding
-# (what a 64 KB file may rightly ask is far less). Each run writes its input to a file
+# (what a 64 KB file may rightly ask is far less); 30 s for one input, as a wide image of a few
+# KB (about 10 MB of pixels, allowed) takes half a second under ASan on a loaded machine and
+# took 10 s when it was busiest. Each run writes its input to a file
 # named .exr in a folder of its own under TMPDIR.
 exec "$build/tests/fuzz/render_file_fuzzer" \
-    -max_total_time="$seconds" -max_len=65536 -timeout=10 -rss_limit_mb=2048 -malloc_limit_mb=512 \
+    -max_total_time="$seconds" -max_len=65536 -timeout=30 -rss_limit_mb=2048 -malloc_limit_mb=512 \
     -print_final_stats=1 -artifact_prefix="$build/render-file-findings/" "$@" \
     "$build/render-file-corpus" "$seeds" "$root/tests/fuzz/render-file-corpus" \
     "$root/tests/fuzz/render-file-findings"

@@ -23,15 +23,19 @@ class UntrustedInput : public ProgramInFolder {
 protected:
     static std::string scene1() { return (sourceDirectory() / "scenes" / "scene1.in").string(); }
 
-    // 8x6 renders of scene 1, 4 samples per pixel, seeds 1 (a.exr) and 2 (b.exr): merged,
-    // they hold 8.
+    // An 8x6 render of scene 1, 4 samples per pixel, of `seed`.
+    void renderShard(const std::string& seed, const std::string& name) const
+    {
+        const ProcessResult result = run({scene1(), "8", "6", "--spp", "4", "--seed", seed,
+                                          "--quiet", "--output", name});
+        ASSERT_TRUE(result.exited && result.exitStatus == 0) << describe(result);
+    }
+
+    // Seeds 1 (a.exr) and 2 (b.exr): merged, they hold 8 samples per pixel.
     void renderTwoShards() const
     {
-        for (const auto& [seed, name] : {std::pair{"1", "a.exr"}, std::pair{"2", "b.exr"}}) {
-            const ProcessResult result = run({scene1(), "8", "6", "--spp", "4", "--seed", seed,
-                                              "--quiet", "--output", name});
-            ASSERT_TRUE(result.exited && result.exitStatus == 0) << describe(result);
-        }
+        renderShard("1", "a.exr");
+        renderShard("2", "b.exr");
     }
 
     void craft(const std::string& name, const fs::path& base, const fs::path& crafted) const
@@ -130,7 +134,7 @@ TEST_F(UntrustedInput, MergeRefusesSamplesPerPixelThatSumBeyondWhatAPixelHolds)
 TEST_F(UntrustedInput, ResumeRefusesACountOfATrillionAtOnce)
 {
     // Through lround into an int, a count of 1e12 wrapped, and the render went on for ever.
-    renderTwoShards();
+    renderShard("1", "a.exr");
     craft("count-of-a-trillion", "a.exr", "c.exr");
     expectRefused({scene1(), "--resume", "c.exr", "--spp", "8", "--output", "r.exr"},
                   {"cannot resume", craftedRenderFile("count-of-a-trillion").refusal}, 30.0);
@@ -138,7 +142,7 @@ TEST_F(UntrustedInput, ResumeRefusesACountOfATrillionAtOnce)
 
 TEST_F(UntrustedInput, InfoRefusesAMeanThatIsNotANumber)
 {
-    renderTwoShards();
+    renderShard("1", "a.exr");
     craft("nan-mean", "a.exr", "c.exr");
     expectRefused({"info", "c.exr"}, {craftedRenderFile("nan-mean").refusal});
 }
@@ -146,7 +150,7 @@ TEST_F(UntrustedInput, InfoRefusesAMeanThatIsNotANumber)
 TEST_F(UntrustedInput, InfoRefusesAHeaderAskingForGigabytesOfASmallFile)
 {
     // A 20 KB file whose header says 10000x10000: 3.2 GB allocated before a pixel was read.
-    renderTwoShards();
+    renderShard("1", "a.exr");
     craft("data-window-10000x10000-in-20-kb", "a.exr", "big.exr");
     expectRefused({"info", "big.exr"},
                   {"big.exr", craftedRenderFile("data-window-10000x10000-in-20-kb").refusal});
@@ -163,7 +167,7 @@ TEST_F(UntrustedInput, InfoRefusesALinkToADeviceAtOnce)
 
 TEST_F(UntrustedInput, MergeRefusesAFifoWithoutWaitingOnIt)
 {
-    renderTwoShards();
+    renderShard("1", "a.exr");
     ASSERT_EQ(::mkfifo((folder_ / "f.exr").c_str(), 0600), 0);
     expectRefused({"merge", "m.exr", "a.exr", "f.exr"}, {"f.exr", "a FIFO, not a regular file"},
                   20.0);
