@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config
   libglfw3-dev libglew-dev libglm-dev libosmesa6-dev
-  libopenimageio-dev openimageio-tools
+  libopenimageio-dev libopenexr-dev openimageio-tools
   libimgui-dev libx11-dev
   libssl-dev
   parallel slurm-wlm munge

@@ -2,6 +2,7 @@
 
 #include "app/RenderCommand.h"
 #include "io/ImageFile.h"
+#include "film/RenderFileChecks.h"
 #include "film/RenderMetadata.h"
 
 #include <algorithm>
@@ -58,6 +59,10 @@ int runInfo(const std::filesystem::path& path)
     if (!metadata)
         throw std::runtime_error(path.string() + " holds no metadata of this program (" +
                                  file.format + "; PPM, PFM, HDR, JPEG and TIFF files hold none)");
+    // What info says of the file is only what a render's file holds (merge and --resume refuse
+    // the same).
+    film::checkPixelValues(file, *metadata, path.string());
+    film::checkPixelDigest(file, path.string());
 
     std::string channels;
     for (const std::string& name : file.channelNames)

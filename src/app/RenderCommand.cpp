@@ -116,10 +116,15 @@ std::string targetStop(const CommandLine& line, const ErrorTargetRun& run, bool 
 
 }  // namespace
 
-int runRender(const CommandLine& commandLine)
+void removeStaleTemporariesOf(const std::vector<std::filesystem::path>& outputs)
 {
-    // From the start: Ctrl-C while the shader compiles must not kill the program unseen.
-    InterruptWatch interrupt;
+    for (const io::StaleTemporary& removed : io::removeStaleTemporaries(outputs))
+        std::cout << "removed " << removed.path.string() << ", a temporary file left by process "
+                  << removed.processId << ", which no longer runs" << std::endl;
+}
+
+int runRender(const CommandLine& commandLine, const InterruptWatch& interrupt)
+{
     CommandLine line = commandLine;
     if (line.statisticsOutput && io::resolveToSameFile(line.outputPath(), *line.statisticsOutput))
         throw UsageError("--stats-output " + line.statisticsOutput->string() + " names the same "
@@ -136,8 +141,13 @@ int runRender(const CommandLine& commandLine)
     if (line.resume)
         resumed = readResumedRender(line, scene, sceneDigest);
     const bool writesFile = line.isBatch() || line.output.has_value();
-    if (writesFile)
+    if (writesFile) {
         io::checkOutputsCanBeWritten(outputRequests(line));
+        std::vector<std::filesystem::path> outputs = {line.outputPath()};
+        if (line.statisticsOutput)
+            outputs.push_back(*line.statisticsOutput);
+        removeStaleTemporariesOf(outputs);
+    }
     // A resumed render goes on where the file left it: no window, whose camera and settings
     // could leave that.
     const bool headless = line.headless || line.resume || !platform::displayAvailable();
@@ -290,10 +300,11 @@ int runRender(const CommandLine& commandLine)
         metadata.renderSeconds = renderSeconds;
         if (resumed) {
             // The new samples of each pixel take the indices from its count on: from the
-            // fewest any pixel held to the count all reach.
+            // fewest any pixel held to the most any holds now (describeRender's count: under
+            // adaptive sampling a pixel may hold more than the frames' count).
             std::vector<film::SampleRange> ranges = resumed->metadata.sampleRanges;
             ranges.push_back({line.settings.seed, fewestResumed,
-                              renderer.samplesPerPixel() - fewestResumed});
+                              metadata.samplesPerPixel - fewestResumed});
             metadata.sampleRanges = film::normalizedRanges(ranges);
             metadata.renderSeconds += resumed->metadata.renderSeconds;
             metadata.mergedFrom = resumed->metadata.mergedFrom;

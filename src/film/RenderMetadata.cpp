@@ -1,5 +1,7 @@
 #include "film/RenderMetadata.h"
 
+#include "film/Accumulation.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -36,7 +38,8 @@ bool readFloat(const std::string& text, float& value)
     return end == text.c_str() + text.size() && std::isfinite(value);
 }
 
-bool readInteger(const std::string& text, int& value)
+template <typename Integer>
+bool readInteger(const std::string& text, Integer& value)
 {
     const char* last = text.data() + text.size();
     const auto [end, error] = std::from_chars(text.data(), last, value);
@@ -237,19 +240,30 @@ std::optional<RenderMetadata> metadataFromAttributes(
     metadata.sceneSha256 = required("sceneSha256");
     if (!parseCamera(required("camera"), metadata.camera))
         throw malformed("camera", "is not 'eye X Y Z target X Y Z up X Y Z fovy F'");
+    const std::string largest = std::to_string(kLargestSampleCount);
     if (!readInteger(required("samplesPerPixel"), metadata.samplesPerPixel) ||
-        metadata.samplesPerPixel < 0)
-        throw malformed("samplesPerPixel", "is not a count");
+        metadata.samplesPerPixel < 0 || metadata.samplesPerPixel > kLargestSampleCount)
+        throw malformed("samplesPerPixel", "is '" + values["samplesPerPixel"] +
+                                               "', not a count from 0 to " + largest);
     try {
         metadata.sampleRanges = parseSampleRanges(required("sampleRanges"));
     } catch (const std::invalid_argument& error) {
         throw malformed("sampleRanges", std::string("is malformed: ") + error.what());
     }
+    // A pixel's sample indices run from 0 to its count, which is at most the largest.
+    for (const SampleRange& range : metadata.sampleRanges)
+        if (range.first > kLargestSampleCount || range.count > kLargestSampleCount - range.first)
+            throw malformed("sampleRanges", "holds " + std::to_string(range.count) +
+                                                " samples of seed " + std::to_string(range.seed) +
+                                                " from index " + std::to_string(range.first) +
+                                                ", beyond the " + largest +
+                                                " samples a pixel can hold");
     char* end = nullptr;
     const std::string& seconds = required("renderSeconds");
     metadata.renderSeconds = std::strtod(seconds.c_str(), &end);
-    if (seconds.empty() || end != seconds.c_str() + seconds.size())
-        throw malformed("renderSeconds", "is not a number");
+    if (seconds.empty() || end != seconds.c_str() + seconds.size() ||
+        !std::isfinite(metadata.renderSeconds) || metadata.renderSeconds < 0.0)
+        throw malformed("renderSeconds", "is '" + seconds + "', not a number of seconds");
     for (const ImageSetting& setting : imageSettings())
         if (!setting.read(metadata.settings, required(setting.key)))
             throw malformed(setting.key, "has the value '" + values[setting.key] +

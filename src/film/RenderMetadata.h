@@ -8,6 +8,7 @@
 #include "film/SampleRanges.h"
 #include "scene/Scene.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,8 +28,9 @@ struct RenderMetadata {
     // defaults when read back.
     settings::RenderSettings settings;
     // Samples per pixel the render aimed at and reached (an interrupted one: the most any
-    // pixel holds); for a merge, the sum over its inputs.
-    int samplesPerPixel = 0;
+    // pixel holds); for a merge, the sum over its inputs. 64-bit, so that a sum of counts read
+    // from files cannot wrap before it is checked against kLargestSampleCount.
+    std::int64_t samplesPerPixel = 0;
     std::vector<SampleRange> sampleRanges;
     // Seconds spent rendering the samples held (summed over resumed and merged renders).
     double renderSeconds = 0.0;
@@ -60,7 +62,9 @@ std::vector<io::ImageAttribute> metadataAttributes(const RenderMetadata& metadat
 
 // From a file's attributes; nothing when they hold none of this program's metadata (no
 // raytracer:sceneSha256). Throws std::runtime_error naming `file` and the attribute when one
-// is missing or malformed. width and height are left 0.
+// is missing or malformed, or holds what no render holds: samples per pixel or a sample index
+// beyond kLargestSampleCount (film/Accumulation.h), seconds that are negative or not
+// finite. width and height are left 0.
 std::optional<RenderMetadata> metadataFromAttributes(
     const std::vector<io::ImageAttribute>& attributes, const std::string& file);
 
