@@ -1,4 +1,5 @@
 #pragma once
+#include "platform/ContextFactory.h"
 #include "render/AdaptiveSampling.h"
 #include "render/RenderSettings.h"
 
@@ -35,6 +36,11 @@ struct CommandLine {
     std::optional<std::filesystem::path> output;
     std::optional<std::filesystem::path> statisticsOutput;
     bool headless = false;
+    // --gl KIND: which OpenGL renders (auto: a window where there is a display and the render
+    // is not headless, else EGL, else OSMesa); --gl-device N: the Nth GPU EGL lists, and no
+    // other (it implies --gl egl).
+    platform::ContextKind gl = platform::ContextKind::Automatic;
+    std::optional<int> glDevice;
     // --samples-per-frame was given: keep it; otherwise the render picks it (RenderCommand).
     bool samplesPerFrameGiven = false;
     bool quiet = false;

@@ -13,6 +13,7 @@
 #include "io/OutputFiles.h"
 #include "platform/ContextFactory.h"
 #include "platform/GlfwWindowContext.h"
+#include "render/PathTracerProgram.h"
 #include "render/ProgressiveRenderer.h"
 #include "render/RenderFile.h"
 #include "render/ScenePreparation.h"
@@ -116,6 +117,24 @@ std::string targetStop(const CommandLine& line, const ErrorTargetRun& run, bool 
 
 }  // namespace
 
+platform::ContextRequest contextRequest(const CommandLine& line)
+{
+    platform::ContextRequest request;
+    request.kind = line.gl;
+    request.headless = line.headless;
+    request.gpuIndex = line.glDevice;
+    request.windowWidth = line.width;
+    request.windowHeight = line.height;
+    request.windowTitle = "raytracer - " + line.scene.filename().string();
+    return request;
+}
+
+std::string describeRenderingDevice(const platform::ContextIdentity& gl,
+                                    const render::KernelChoice& kernel)
+{
+    return gl.describe() + ", " + render::pathKernelName(kernel.kernel) + " kernel";
+}
+
 int runRender(const CommandLine& commandLine)
 {
     // From the start: Ctrl-C while the shader compiles must not kill the program unseen.
@@ -140,17 +159,16 @@ int runRender(const CommandLine& commandLine)
         io::checkOutputsCanBeWritten(outputRequests(line));
     // A resumed render goes on where the file left it: no window, whose camera and settings
     // could leave that.
-    const bool headless = line.headless || line.resume || !platform::displayAvailable();
-    if (headless && !line.isBatch())
-        throw UsageError(std::string(line.headless ? "--headless" : "there is no display, so") +
+    platform::ContextRequest request = contextRequest(line);
+    request.headless = line.headless || line.resume;
+    if (platform::makesHeadlessContext(request) && !line.isBatch())
+        throw UsageError(std::string(line.headless ? "--headless"
+                                     : line.gl != platform::ContextKind::Automatic
+                                         ? "--gl " + std::string(platform::contextKindName(line.gl))
+                                         : "there is no display, so") +
                          " renders need an end: give SECONDS or --spp (the image is written "
                          "to a file)");
 
-    platform::ContextRequest request;
-    request.headless = headless;
-    request.windowWidth = line.width;
-    request.windowHeight = line.height;
-    request.windowTitle = "raytracer - " + line.scene.filename().string();
     const auto setupStart = std::chrono::steady_clock::now();
     auto context = platform::createContext(request);
     render::RenderSettings settings = line.settings;
@@ -248,6 +266,7 @@ int runRender(const CommandLine& commandLine)
     char setup[64];
     std::snprintf(setup, sizeof setup, " (setup %.2f s)", setupSeconds);
     summary += setup;
+    summary += " [" + describeRenderingDevice(context->identity(), renderer.kernel()) + "]";
 
     // An image without a sample is all black, and a resumed render without a new sample is
     // the file it resumed: neither is written, nor over an older file.
@@ -286,7 +305,8 @@ int runRender(const CommandLine& commandLine)
                 fromWindow = true;
             }
         }
-        render::RenderMetadata metadata = describeRender(line.scene, sceneDigest, renderer);
+        render::RenderMetadata metadata = describeRender(line.scene, sceneDigest, renderer,
+                                                                context->identity());
         metadata.renderSeconds = renderSeconds;
         if (resumed) {
             // The new samples of each pixel take the indices from its count on: from the
@@ -297,6 +317,13 @@ int runRender(const CommandLine& commandLine)
             metadata.sampleRanges = render::normalizedRanges(ranges);
             metadata.renderSeconds += resumed->metadata.renderSeconds;
             metadata.mergedFrom = resumed->metadata.mergedFrom;
+            // The samples held came from the resumed file's device, the new ones from this.
+            render::RenderMetadata devices = resumed->metadata;
+            render::addRenderingDevice(devices, metadata);
+            metadata.glContext = devices.glContext;
+            metadata.glRenderer = devices.glRenderer;
+            metadata.glVersion = devices.glVersion;
+            metadata.kernel = devices.kernel;
         }
         if (interrupted)
             metadata.interrupted =
@@ -325,16 +352,29 @@ int printFeatures(const CommandLine& line)
     const render::PreparedScene prepared =
         render::prepareScene(scene::parseSceneFile(line.scene),
                              render::shaderBuild(line.settings), render::defaultShaderDirectory());
-    std::cout << prepared.code.features.describe();
+    std::cout << prepared.code.features.describe() << std::flush;
+    // The OpenGL a headless render of this command line would use (a window only where
+    // --gl window asks for one), and the kernel it would run there.
+    platform::ContextRequest request = contextRequest(line);
+    request.headless = true;
+    const auto context = platform::createContext(request);
+    const render::KernelChoice kernel = render::chooseKernel(line.settings.kernel);
+    std::cout << "OpenGL:        " << context->identity().describe() << "\n"
+              << "kernel:        " << render::pathKernelName(kernel.kernel) << " (" << kernel.reason
+              << ")\n";
     return kExitSuccess;
 }
 
 int printShader(const CommandLine& line)
 {
-    const render::PreparedScene prepared =
-        render::prepareScene(scene::parseSceneFile(line.scene),
-                             render::shaderBuild(line.settings), render::defaultShaderDirectory());
-    std::cout << prepared.fragmentSource.text();
+    // No context is made: auto prints the fragment kernel's shader.
+    const render::PathKernel kernel = line.settings.kernel == render::PathKernel::Compute
+                                          ? render::PathKernel::Compute
+                                          : render::PathKernel::Fragment;
+    const render::PreparedScene prepared = render::prepareScene(
+        scene::parseSceneFile(line.scene), render::shaderBuild(line.settings),
+        render::defaultShaderDirectory(), kernel);
+    std::cout << prepared.pathTracerSource.text();
     return kExitSuccess;
 }
 

@@ -1,9 +1,10 @@
 #pragma once
 // The one preparation stage between a parsed scene and the GPU: objects that do nothing to
 // light are dropped, the shader code is generated for what is left, its numbers are packed
-// and the fragment shader is assembled. Pure (it reads shader files, never GL state): the
+// and the path-tracing shader is assembled for a kernel. Pure (it reads shader files, never GL state): the
 // renderer, `--features`, `--print-shader` and the benchmarks all prepare a scene here, so
 // they all see the same visible scene, features and source.
+#include "render/PathKernel.h"
 #include "render/RenderSettings.h"
 #include "render/SceneShaderGenerator.h"
 #include "render/SceneUniforms.h"
@@ -18,11 +19,13 @@ struct PreparedScene {
     scene::Scene visible;      // without its invisible objects (scene/InvisibleObjects.h)
     SceneShaderCode code;      // code.features: what the shader is built for
     SceneUniforms uniforms;    // every number the shader reads from the scene
-    ShaderSource fragmentSource;
+    ShaderSource pathTracerSource;  // for the kernel asked (fragment or compute)
 };
 
+// `kernel`: Fragment or Compute (the renderer chooses Automatic's in its context).
 PreparedScene prepareScene(const scene::Scene& scene, const ShaderBuild& build,
-                           const std::filesystem::path& shaderDirectory);
+                           const std::filesystem::path& shaderDirectory,
+                           PathKernel kernel = PathKernel::Fragment);
 
 // The project's shaders/ folder (FileLookup::dataDirectory()).
 std::filesystem::path defaultShaderDirectory();
