@@ -202,8 +202,8 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
             const std::string kind = value(argument);
             const auto named = platform::contextKindNamed(kind);
             if (!named)
-                throw UsageError("--gl must be 'auto', 'egl', 'osmesa' or 'window', not '" + kind +
-                                 "'");
+                throw UsageError("--gl must be 'auto', 'egl', 'gpu', 'osmesa' or 'window', not '" +
+                                 kind + "'");
             line.gl = *named;
         } else if (argument == "--gl-device") {
             line.glDevice = nonNegativeInteger(value(argument), "--gl-device", 1023);
@@ -294,7 +294,7 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
             throw UsageError(std::string("--gl-device picks a GPU through EGL: it does not go "
                                          "with --gl ") +
                              platform::contextKindName(line.gl));
-        line.gl = platform::ContextKind::Egl;
+        line.gl = platform::ContextKind::Gpu;
     }
     if (line.gl == platform::ContextKind::Window && line.headless)
         throw UsageError("--headless and --gl window contradict each other: give one");
@@ -397,10 +397,11 @@ output:
   --gl KIND             which OpenGL renders: auto (default: a window where there is a
                         display and the render is not headless; else EGL on a GPU, EGL on
                         Mesa's software device, EGL surfaceless, OSMesa, the first that
-                        works), egl (those of EGL only), osmesa, or window
+                        works), egl (those of EGL only), gpu (EGL on a GPU only, never on
+                        the processor: for render farms), osmesa, or window
   --gl-device N         render on the Nth GPU EGL lists (from 0; the software device is not
                         counted), and on no other: one shard per GPU (docs/SCALE_OUT.md).
-                        Implies --gl egl
+                        Implies --gl gpu
   --kernel KIND         the GPU kernel that traces the paths, the same samples either way:
                         fragment (a full-screen triangle), compute (OpenGL 4.3), or auto
                         (default: the one measured faster on this renderer; --features

@@ -38,7 +38,7 @@ struct CommandLine {
     bool headless = false;
     // --gl KIND: which OpenGL renders (auto: a window where there is a display and the render
     // is not headless, else EGL, else OSMesa); --gl-device N: the Nth GPU EGL lists, and no
-    // other (it implies --gl egl).
+    // other (it implies --gl gpu).
     platform::ContextKind gl = platform::ContextKind::Automatic;
     std::optional<int> glDevice;
     // --samples-per-frame was given: keep it; otherwise the render picks it (RenderCommand).

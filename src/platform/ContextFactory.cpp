@@ -55,9 +55,11 @@ std::string listDevices(const std::vector<EglDevice>& devices)
     return text;
 }
 
-// EGL on a GPU (the one asked for, else each in turn), then on Mesa's software device,
-// then on Mesa's surfaceless platform. Null when none works; the reasons are in `attempts`.
-std::unique_ptr<GlContext> tryEgl(const ContextRequest& request, Attempts& attempts)
+// EGL on a GPU (the one asked for, else each in turn), then, unless `gpusOnly`, on Mesa's
+// software device and on Mesa's surfaceless platform. Null when none works; the reasons are
+// in `attempts`.
+std::unique_ptr<GlContext> tryEgl(const ContextRequest& request, bool gpusOnly,
+                                  Attempts& attempts)
 {
     std::vector<EglDevice> devices;
     try {
@@ -84,6 +86,8 @@ std::unique_ptr<GlContext> tryEgl(const ContextRequest& request, Attempts& attem
     }
     if (gpus == 0 && !devices.empty())
         attempts.fail("EGL on a GPU", "EGL lists no GPU (" + listDevices(devices) + ")");
+    if (gpusOnly)
+        return nullptr;
     for (const EglDevice& device : devices)
         if (device.software)
             if (auto context =
@@ -104,6 +108,7 @@ const char* contextKindName(ContextKind kind)
     switch (kind) {
     case ContextKind::Automatic: return "auto";
     case ContextKind::Egl: return "egl";
+    case ContextKind::Gpu: return "gpu";
     case ContextKind::OsMesa: return "osmesa";
     case ContextKind::Window: return "window";
     }
@@ -112,8 +117,8 @@ const char* contextKindName(ContextKind kind)
 
 std::optional<ContextKind> contextKindNamed(const std::string& name)
 {
-    for (ContextKind kind : {ContextKind::Automatic, ContextKind::Egl, ContextKind::OsMesa,
-                             ContextKind::Window})
+    for (ContextKind kind : {ContextKind::Automatic, ContextKind::Egl, ContextKind::Gpu,
+                             ContextKind::OsMesa, ContextKind::Window})
         if (name == contextKindName(kind))
             return kind;
     return std::nullopt;
@@ -133,6 +138,7 @@ bool makesHeadlessContext(const ContextRequest& request)
         return request.headless || request.gpuIndex || !displayAvailable();
     case ContextKind::Window: return false;
     case ContextKind::Egl:
+    case ContextKind::Gpu:
     case ContextKind::OsMesa: return true;
     }
     return true;
@@ -142,9 +148,8 @@ std::unique_ptr<GlContext> createContext(const ContextRequest& request)
 {
     Attempts attempts;
     std::unique_ptr<GlContext> context;
-    // A GPU asked for by number is reached through EGL alone.
-    const ContextKind kind =
-        request.kind == ContextKind::Automatic && request.gpuIndex ? ContextKind::Egl : request.kind;
+    // A GPU asked for by number is that GPU through EGL, nothing else.
+    const ContextKind kind = request.gpuIndex ? ContextKind::Gpu : request.kind;
     switch (kind) {
     case ContextKind::Window:
         return std::make_unique<GlfwWindowContext>(request.windowWidth, request.windowHeight,
@@ -154,15 +159,19 @@ std::unique_ptr<GlContext> createContext(const ContextRequest& request)
             return context;
         attempts.throwNone("--gl osmesa");
     case ContextKind::Egl:
-        if ((context = tryEgl(request, attempts)))
+        if ((context = tryEgl(request, false, attempts)))
+            return context;
+        attempts.throwNone("--gl egl");
+    case ContextKind::Gpu:
+        if ((context = tryEgl(request, true, attempts)))
             return context;
         attempts.throwNone(request.gpuIndex ? "--gl-device " + std::to_string(*request.gpuIndex)
-                                            : std::string("--gl egl"));
+                                            : std::string("--gl gpu"));
     case ContextKind::Automatic:
         if (!makesHeadlessContext(request))
             return std::make_unique<GlfwWindowContext>(request.windowWidth, request.windowHeight,
                                                        request.windowTitle);
-        if ((context = tryEgl(request, attempts)) || (context = tryOsMesa(attempts)))
+        if ((context = tryEgl(request, false, attempts)) || (context = tryOsMesa(attempts)))
             return context;
         attempts.throwNone("a headless render");
     }

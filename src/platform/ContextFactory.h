@@ -13,11 +13,12 @@ enum class ContextKind {
     // EGL on a GPU, EGL on Mesa's software device, EGL surfaceless and OSMesa that works.
     Automatic,
     Egl,     // headless through EGL only: a GPU, else the software device, else surfaceless
+    Gpu,     // headless through EGL on a GPU only (the first that works), never on the CPU
     OsMesa,  // headless through Mesa's off-screen interface (llvmpipe)
     Window,  // a GLFW window (needs a display)
 };
 
-// "egl", "osmesa", "window", "auto" (for messages and --gl).
+// "auto", "egl", "gpu", "osmesa", "window" (for messages and --gl).
 const char* contextKindName(ContextKind kind);
 std::optional<ContextKind> contextKindNamed(const std::string& name);
 
@@ -26,7 +27,8 @@ struct ContextRequest {
     // Automatic only: no window even where there is a display.
     bool headless = false;
     // --gl-device N: the Nth GPU EGL lists (GPUs only, counted from 0), and no other: a
-    // render meant for one GPU never falls back to another device or to the CPU.
+    // render meant for one GPU never falls back to another device or to the CPU. Whatever
+    // the kind, it makes the request Gpu's for that one GPU.
     std::optional<int> gpuIndex;
     int windowWidth = 640;
     int windowHeight = 480;

@@ -123,6 +123,27 @@ TEST_F(GlContexts, AGpuNumberBeyondThoseEglListsIsAnErrorNotAFallback)
     EXPECT_TRUE(filesInFolder().empty()) << "nothing written";
 }
 
+// On a farm node a render meant for the GPU must not run on the processor unseen.
+TEST_F(GlContexts, GlGpuRendersOnAGpuOrNotAtAll)
+{
+    const ProcessResult result =
+        run({scene1(), "32", "24", "--spp", "1", "--gl", "gpu", "-o", "a.png"});
+    ASSERT_TRUE(result.exited) << describe(result);
+    if (result.exitStatus == 0) {
+        EXPECT_EQ(renderingDeviceOf(result.standardOutput).kind.rfind("EGL device ", 0), 0u)
+            << result.standardOutput;
+        return;
+    }
+    EXPECT_EQ(result.exitStatus, 1) << describe(result);
+    EXPECT_NE(result.standardError.find("no OpenGL context could be made for --gl gpu"),
+              std::string::npos)
+        << result.standardError;
+    EXPECT_EQ(result.standardError.find("OSMesa"), std::string::npos) << result.standardError;
+    EXPECT_EQ(result.standardError.find("software device:"), std::string::npos)
+        << "the software device is not tried: " << result.standardError;
+    EXPECT_TRUE(filesInFolder().empty()) << "nothing written";
+}
+
 TEST_F(GlContexts, FeaturesNameTheOpenGLAndTheKernelAutoChoosesThere)
 {
     const ProcessResult result = run({scene1(), "--features", "--gl", "egl"});
