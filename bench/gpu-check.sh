@@ -4,9 +4,10 @@
 # llvmpipe), then measures, for the seven classic scenes at 800x600 (the seed's resolution),
 # million paths per second for the fragment and the compute kernel, the two alternating, and
 # prints a table naming GL_RENDERER with the seed's own figures beside ours (from its report:
-# another machine, so never a ratio). About 4 minutes on a GPU.
+# another machine, so never a ratio). Meant to finish in under 5 minutes on a GPU; so far it
+# has run only on llvmpipe (docs/PERFORMANCE.md).
 #
-#   bench/gpu-check.sh [--gl-device N] [--rounds N] [--spp N] [--build-dir DIR]
+#   bench/gpu-check.sh [--gl-device N] [--rounds N] [--spp N] [--size W H] [--build-dir DIR]
 #                      [--skip-build] [--skip-tests]
 #
 # --gl-device N: the Nth GPU EGL lists (default: EGL's choice, the first GPU; the regression
@@ -15,20 +16,24 @@
 # seconds on a GPU; every render stops at 30 s whatever it holds). Both kernels trace the
 # same samples, so their ratio is of equal work. On a software rasteriser (llvmpipe) it says
 # so and runs reduced: the regression tests of the classic scenes only, 2 samples per pixel
-# per render (a few seconds each) and 2 rounds; the table is then llvmpipe's.
+# per render (a few seconds each) and 2 rounds; the table is then llvmpipe's. --size: another
+# image size than 800 x 600 (with --skip-build --skip-tests: only the kernels' comparison).
+# The ratio column is the median of the rounds' ratios, each of a fragment and a compute
+# render run one after the other, with the smallest and largest in brackets.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="$root/build-gpu-check"
-device=() rounds="" spp="" build_it=1 test_it=1
+device=() rounds="" spp="" width=800 height=600 build_it=1 test_it=1
 while [ $# -gt 0 ]; do
   case "$1" in
     --gl-device) device=(--gl-device "$2"); shift 2 ;;
     --rounds) rounds="$2"; shift 2 ;;
     --spp) spp="$2"; shift 2 ;;
+    --size) width="$2"; height="$3"; shift 3 ;;
     --build-dir) build="$(readlink -f "$2")"; shift 2 ;;
     --skip-build) build_it=0; shift ;;
     --skip-tests) test_it=0; shift ;;
-    *) echo "usage: gpu-check.sh [--gl-device N] [--rounds N] [--spp N] [--build-dir DIR]" \
+    *) echo "usage: gpu-check.sh [--gl-device N] [--rounds N] [--spp N] [--size W H] [--build-dir DIR]" \
             "[--skip-build] [--skip-tests]" >&2; exit 2 ;;
   esac
 done
@@ -59,6 +64,9 @@ fi
 features="$(env -u DISPLAY -u WAYLAND_DISPLAY "$raytracer" "$root/scenes/scene1.in" --features \
             --gl egl "${device[@]}" 2>&1)" || { echo "$features" >&2; exit 1; }
 opengl="$(echo "$features" | sed -n 's/^OpenGL: *//p')"
+# "KIND: RENDERER, OpenGL VERSION"
+context="${opengl%%: *}" renderer="${opengl#*: }"
+version="${renderer##*, OpenGL }" renderer="${renderer%, OpenGL *}"
 auto_kernel="$(echo "$features" | sed -n 's/^kernel: *//p')"
 echo "OpenGL (EGL): $opengl"
 echo "--kernel auto here: $auto_kernel"
@@ -66,8 +74,9 @@ reduced=0
 case "$opengl" in
   *llvmpipe*|*softpipe*|*swrast*|*"software device"*)
     reduced=1
-    echo "NOTE: this is a software rasteriser on the CPU, not a GPU: reduced run (classic scenes'" \
-         "regression tests only; 2 samples per pixel per render)" ;;
+    echo "NOTE: this is a software rasteriser on the processor, not a GPU: reduced run (the" \
+         "classic scenes' regression tests only; by default 2 samples per pixel per render," \
+         "2 rounds)" ;;
 esac
 [ -n "$rounds" ] || rounds=$([ "$reduced" = 1 ] && echo 2 || echo 3)
 [ -n "$spp" ] || spp=$([ "$reduced" = 1 ] && echo 2 || echo 256)
@@ -76,9 +85,10 @@ tests_status=0
 if [ "$test_it" = 1 ]; then
   echo "== image regression through EGL ($(elapsed))"
   filter=()
-  [ "$reduced" = 1 ] && filter=(-R '/scene[1-7]$')
+  # ctest names a parameterised case "Case/...Reference/scene1  # GetParam() = scene1".
+  [ "$reduced" = 1 ] && filter=(-R '/scene[1-7]( |$)')
   ctest --test-dir "$build" -L regression-egl "${filter[@]}" --parallel "$(nproc)" \
-    --output-on-failure > "$build/gpu-check-tests.log" 2>&1 || tests_status=$?
+    --no-tests=error --output-on-failure > "$build/gpu-check-tests.log" 2>&1 || tests_status=$?
   grep -E '^[0-9]+% tests passed|tests failed|\(Failed\)|Not Run' "$build/gpu-check-tests.log" ||
     tail -5 "$build/gpu-check-tests.log"
 fi
@@ -86,15 +96,17 @@ fi
 echo "== kernels side by side: 7 scenes x 2 kernels x $rounds rounds ($(elapsed))"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-declare -A rate
+declare -A rate last
 measure() {  # scene kernel -> appends the Mpaths/s of one render to rate[scene,kernel]
   local scene="$1" kernel="$2" line
-  line="$(env -u DISPLAY -u WAYLAND_DISPLAY "$raytracer" "$root/scenes/$scene.in" 800 600 \
+  line="$(env -u DISPLAY -u WAYLAND_DISPLAY "$raytracer" "$root/scenes/$scene.in" "$width" "$height" \
           30 --spp "$spp" --gl egl "${device[@]}" --kernel "$kernel" --quiet \
           --output "$work/$scene-$kernel.exr" 2>&1 | tail -1)"
   local mpaths; mpaths="$(echo "$line" | grep -o '[0-9.]* Mpaths/s' | head -1 | cut -d' ' -f1)"
+  last[$kernel]=""
   [ -n "$mpaths" ] || { echo "  $scene $kernel: FAILED: $line"; return 0; }
   rate[$scene,$kernel]="${rate[$scene,$kernel]:-} $mpaths"
+  last[$kernel]="$mpaths"
   echo "  round $round $scene $kernel: $mpaths Mpaths/s"
 }
 scenes=(scene1 scene2 scene3 scene4 scene5 scene6 scene7)
@@ -104,6 +116,10 @@ for round in $(seq "$rounds"); do
     # runs on a machine just warmed (or slowed) by the other.
     if [ $((round % 2)) = 1 ]; then order=(fragment compute); else order=(compute fragment); fi
     for kernel in "${order[@]}"; do measure "$scene" "$kernel"; done
+    if [ -n "${last[fragment]}" ] && [ -n "${last[compute]}" ]; then
+      rate[$scene,ratio]="${rate[$scene,ratio]:-} $(awk -v c="${last[compute]}" \
+                                                      -v f="${last[fragment]}" 'BEGIN{print c / f}')"
+    fi
   done
 done
 
@@ -117,18 +133,23 @@ declare -A seed=([scene1]="1.10 (fig. 7)" [scene2]="1.19 (fig. 9)" [scene3]="-"
                  [scene4]="2.42 (fig. 11)" [scene5]="4.77 (fig. 12)" [scene6]="0.48 (fig. 14)"
                  [scene7]="1.14 (fig. 13)")
 echo
-echo "GL_RENDERER: ${opengl#*: }"
-echo "context: ${opengl%%: *}"
+echo "GL_RENDERER: $renderer"
+echo "GL_VERSION: $version"
+echo "context: $context"
 echo
-echo "| scene | fragment Mpaths/s | compute Mpaths/s | compute / fragment | the seed's report, Mpaths/s (another machine: its 2015 GPU) |"
+echo "| scene | fragment Mpaths/s | compute Mpaths/s | compute / fragment, pair by pair [range] | the seed's report, Mpaths/s (another machine: its 2015 GPU) |"
 echo "|---|---|---|---|---|"
 for scene in "${scenes[@]}"; do
   f="$(echo ${rate[$scene,fragment]:-} | median)"; c="$(echo ${rate[$scene,compute]:-} | median)"
   ratio="-"
-  [ -n "$f" ] && [ -n "$c" ] && ratio="$(awk -v c="$c" -v f="$f" 'BEGIN{printf "%.2fx", c / f}')"
+  if [ -n "${rate[$scene,ratio]:-}" ]; then
+    ratios="$(echo ${rate[$scene,ratio]} | tr ' ' '\n' | sort -g)"
+    ratio="$(printf '%.2fx [%.2f-%.2f]' "$(echo $ratios | median)" "$(echo "$ratios" | head -1)" \
+             "$(echo "$ratios" | tail -1)")"
+  fi
   echo "| $scene | ${f:--} | ${c:--} | $ratio | ${seed[$scene]} |"
 done
-size="800 x 600, $spp spp per render"
+size="$width x $height, $spp spp per render"
 echo "($size, median of $rounds alternating rounds; the seed's column is its report's," \
      "from another machine: about 1.03 Mpaths/s in its Figure 8, 400x300)"
 echo "== done in $(elapsed)"

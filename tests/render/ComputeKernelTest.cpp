@@ -1,9 +1,10 @@
 // The compute kernel (render/PathKernel.h) against the fragment kernel, in the context the
 // executable made (OSMesa, or EGL: ctest runs both): the two run the same per-pixel code
 // (shaders/modules/path_tracer_main.glsl), so for one seed every pixel holds the same number
-// of samples, of the same sample indices, and the images agree within noise. (On llvmpipe
-// they agree bit for bit; a GPU may contract arithmetic differently in the two stages, so no
-// more than agreement within noise is asked.)
+// of samples, of the same sample indices, and the images agree within noise. (On llvmpipe the
+// radiance agrees bit for bit, but the fragment stage flushes denormals to zero and compute
+// does not; a GPU may contract arithmetic differently in the two stages: so no more than
+// agreement within noise is asked.)
 #include "render/PathTracerProgram.h"
 #include "render/ProgressiveRenderer.h"
 #include "support/ImageComparison.h"
