@@ -2,7 +2,7 @@
 
 #include "app/BuildInfo.h"
 #include "app/ErrorTargetRun.h"
-#include "app/FramePacing.h"
+#include "interaction/FramePacing.h"
 #include "app/InteractiveSession.h"
 #include "app/Interrupt.h"
 #include "app/Progress.h"
@@ -13,9 +13,9 @@
 #include "io/OutputFiles.h"
 #include "platform/ContextFactory.h"
 #include "platform/GlfwWindowContext.h"
-#include "render/PathTracerProgram.h"
+#include "render/KernelChoice.h"
 #include "render/ProgressiveRenderer.h"
-#include "render/RenderFile.h"
+#include "film/RenderFile.h"
 #include "render/ScenePreparation.h"
 #include "scene/SceneFeatures.h"
 #include "scene/SceneParser.h"
@@ -46,17 +46,17 @@ std::vector<io::OutputRequest> outputRequests(const CommandLine& line)
 // The render --resume goes on from, checked against the one the command line asks for:
 // same size, scene, camera, image-changing settings and program build. `line` takes the
 // file's size and seed where the command line gives none.
-render::RenderFile readResumedRender(CommandLine& line, const scene::Scene& scene,
+film::RenderFile readResumedRender(CommandLine& line, const scene::Scene& scene,
                                      const std::string& sceneSha256)
 {
     const std::filesystem::path& path = *line.resume;
-    render::RenderFile resumed;
+    film::RenderFile resumed;
     try {
-        resumed = render::readRenderFile(path);
+        resumed = film::readRenderFile(path);
     } catch (const std::exception& error) {
         throw std::runtime_error(std::string("cannot resume: ") + error.what());
     }
-    const render::RenderMetadata& held = resumed.metadata;
+    const film::RenderMetadata& held = resumed.metadata;
     if (!line.sizeGiven) {
         line.width = held.width;
         line.height = held.height;
@@ -64,7 +64,7 @@ render::RenderFile readResumedRender(CommandLine& line, const scene::Scene& scen
     if (!line.seedGiven && !held.sampleRanges.empty())
         line.settings.seed = held.sampleRanges.front().seed;
 
-    render::RenderMetadata asked = held;
+    film::RenderMetadata asked = held;
     asked.width = line.width;
     asked.height = line.height;
     asked.sceneSha256 = sceneSha256;
@@ -72,11 +72,11 @@ render::RenderFile readResumedRender(CommandLine& line, const scene::Scene& scen
     asked.settings = line.settings;
     asked.program = programName();
     asked.gitCommit = gitCommit();
-    if (const auto difference = render::imageDifference(held, asked))
+    if (const auto difference = film::imageDifference(held, asked))
         throw std::runtime_error("cannot resume " + path.string() + ": it differs from this "
                                  "render in " + difference->what + ": " + difference->first +
                                  " in the file, " + difference->second + " here");
-    const render::SampleCountSpan span = render::samplesTakenSpan(resumed.accumulation);
+    const film::SampleCountSpan span = film::samplesTakenSpan(resumed.accumulation);
     if (line.samplesPerPixel && span.fewest >= *line.samplesPerPixel)
         throw std::runtime_error(path.string() + " holds " + std::to_string(span.fewest) +
                                  " samples per pixel already: --spp " +
@@ -132,7 +132,7 @@ platform::ContextRequest contextRequest(const CommandLine& line)
 std::string describeRenderingDevice(const platform::ContextIdentity& gl,
                                     const render::KernelChoice& kernel)
 {
-    return gl.describe() + ", " + render::pathKernelName(kernel.kernel) + " kernel";
+    return gl.describe() + ", " + settings::pathKernelName(kernel.kernel) + " kernel";
 }
 
 int runRender(const CommandLine& commandLine)
@@ -151,7 +151,7 @@ int runRender(const CommandLine& commandLine)
     // Every texture must be readable before a window opens or a frame is rendered.
     const scene::Scene scene = loadScene(line.scene);
     std::string sceneDigest = sceneSha256(filesOfScene(line.scene, scene));
-    std::optional<render::RenderFile> resumed;
+    std::optional<film::RenderFile> resumed;
     if (line.resume)
         resumed = readResumedRender(line, scene, sceneDigest);
     const bool writesFile = line.isBatch() || line.output.has_value();
@@ -171,7 +171,7 @@ int runRender(const CommandLine& commandLine)
 
     const auto setupStart = std::chrono::steady_clock::now();
     auto context = platform::createContext(request);
-    render::RenderSettings settings = line.settings;
+    settings::RenderSettings settings = line.settings;
     // The window's panel switches the environment off without a recompile.
     settings.switchableEnvironment = context->hasWindow();
     render::ProgressiveRenderer renderer(scene, line.width, line.height, settings);
@@ -184,7 +184,7 @@ int runRender(const CommandLine& commandLine)
     if (resumed) {
         renderer.resumeFrom(resumed->accumulation);
         samplesResumed = renderer.samplesPerPixel();
-        fewestResumed = render::samplesTakenSpan(resumed->accumulation).fewest;
+        fewestResumed = film::samplesTakenSpan(resumed->accumulation).fewest;
     }
     const double setupSeconds = secondsSince(setupStart);
 
@@ -208,12 +208,12 @@ int runRender(const CommandLine& commandLine)
         };
         if (errorTarget)
             errorTarget->start(renderer);
-        SamplesPerFrame pacing(line.settings.samplesPerFrame, line.samplesPerFrameGiven, 0.5,
+        interaction::SamplesPerFrame pacing(line.settings.samplesPerFrame, line.samplesPerFrameGiven, 0.5,
                                renderer.samplesAdaptively() ? kMostAdaptiveSamplesPerFrame : 16);
         while (keepGoing()) {
             if (errorTarget && (errorTarget->reached() || errorTarget->limitReached()))
                 break;
-            // Adaptive sampling limits each pixel to --spp itself (render/AdaptiveSampling.h).
+            // Adaptive sampling limits each pixel to --spp itself (film/AdaptiveSampling.h).
             const bool countsUniformSamples = !errorTarget || !errorTarget->adaptive();
             if (countsUniformSamples && line.samplesPerPixel &&
                 renderer.samplesPerPixel() >= *line.samplesPerPixel)
@@ -254,12 +254,12 @@ int runRender(const CommandLine& commandLine)
     // A render with an end (SECONDS or --spp) stopped before it by Ctrl-C or by closing its
     // window is interrupted; a window without an end is meant to be closed.
     const bool interrupted = interrupt.requested() || endedEarly;
-    const render::Accumulation accumulation = renderer.accumulation();
+    const film::Accumulation accumulation = renderer.accumulation();
     std::string summary =
         renderer.samplesAdaptively()
             ? Progress::adaptiveSummary(renderer.width(), renderer.height(),
-                                        render::samplesTakenSpan(accumulation),
-                                        render::samplesTakenInAll(accumulation), renderSeconds,
+                                        film::samplesTakenSpan(accumulation),
+                                        film::samplesTakenInAll(accumulation), renderSeconds,
                                         renderer.discardedSamples())
             : Progress::summary(renderer.width(), renderer.height(), renderer.samplesPerPixel(),
                                 renderSeconds, renderer.discardedSamples(), samplesResumed);
@@ -271,8 +271,8 @@ int runRender(const CommandLine& commandLine)
     // An image without a sample is all black, and a resumed render without a new sample is
     // the file it resumed: neither is written, nor over an older file.
     const bool nothingNew =
-        resumed ? render::samplesTakenInAll(accumulation) <=
-                      render::samplesTakenInAll(resumed->accumulation)
+        resumed ? film::samplesTakenInAll(accumulation) <=
+                      film::samplesTakenInAll(resumed->accumulation)
                 : renderer.samplesPerPixel() == 0;
     if (writesFile && nothingNew) {
         if (!interrupted) {
@@ -305,21 +305,21 @@ int runRender(const CommandLine& commandLine)
                 fromWindow = true;
             }
         }
-        render::RenderMetadata metadata = describeRender(line.scene, sceneDigest, renderer,
-                                                                context->identity());
+        film::RenderMetadata metadata =
+            describeRender(line.scene, sceneDigest, renderer, context->identity());
         metadata.renderSeconds = renderSeconds;
         if (resumed) {
             // The new samples of each pixel take the indices from its count on: from the
             // fewest any pixel held to the count all reach.
-            std::vector<render::SampleRange> ranges = resumed->metadata.sampleRanges;
+            std::vector<film::SampleRange> ranges = resumed->metadata.sampleRanges;
             ranges.push_back({line.settings.seed, fewestResumed,
                               renderer.samplesPerPixel() - fewestResumed});
-            metadata.sampleRanges = render::normalizedRanges(ranges);
+            metadata.sampleRanges = film::normalizedRanges(ranges);
             metadata.renderSeconds += resumed->metadata.renderSeconds;
             metadata.mergedFrom = resumed->metadata.mergedFrom;
             // The samples held came from the resumed file's device, the new ones from this.
-            render::RenderMetadata devices = resumed->metadata;
-            render::addRenderingDevice(devices, metadata);
+            film::RenderMetadata devices = resumed->metadata;
+            film::addRenderingDevice(devices, metadata);
             metadata.glContext = devices.glContext;
             metadata.glRenderer = devices.glRenderer;
             metadata.glVersion = devices.glVersion;
@@ -351,7 +351,7 @@ int printFeatures(const CommandLine& line)
 {
     const render::PreparedScene prepared =
         render::prepareScene(scene::parseSceneFile(line.scene),
-                             render::shaderBuild(line.settings), render::defaultShaderDirectory());
+                             shadergen::shaderBuild(line.settings), render::defaultShaderDirectory());
     std::cout << prepared.code.features.describe() << std::flush;
     // The OpenGL a headless render of this command line would use (a window only where
     // --gl window asks for one), and the kernel it would run there.
@@ -360,19 +360,19 @@ int printFeatures(const CommandLine& line)
     const auto context = platform::createContext(request);
     const render::KernelChoice kernel = render::chooseKernel(line.settings.kernel);
     std::cout << "OpenGL:        " << context->identity().describe() << "\n"
-              << "kernel:        " << render::pathKernelName(kernel.kernel) << " (" << kernel.reason
-              << ")\n";
+              << "kernel:        " << settings::pathKernelName(kernel.kernel) << " ("
+              << kernel.reason << ")\n";
     return kExitSuccess;
 }
 
 int printShader(const CommandLine& line)
 {
     // No context is made: auto prints the fragment kernel's shader.
-    const render::PathKernel kernel = line.settings.kernel == render::PathKernel::Compute
-                                          ? render::PathKernel::Compute
-                                          : render::PathKernel::Fragment;
+    const settings::PathKernel kernel = line.settings.kernel == settings::PathKernel::Compute
+                                            ? settings::PathKernel::Compute
+                                            : settings::PathKernel::Fragment;
     const render::PreparedScene prepared = render::prepareScene(
-        scene::parseSceneFile(line.scene), render::shaderBuild(line.settings),
+        scene::parseSceneFile(line.scene), shadergen::shaderBuild(line.settings),
         render::defaultShaderDirectory(), kernel);
     std::cout << prepared.pathTracerSource.text();
     return kExitSuccess;

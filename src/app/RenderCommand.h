@@ -1,7 +1,7 @@
 #pragma once
 #include "app/CommandLine.h"
 #include "platform/GlContext.h"
-#include "render/PathKernel.h"
+#include "render/KernelChoice.h"
 
 #include <string>
 

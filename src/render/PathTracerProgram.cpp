@@ -1,6 +1,6 @@
 #include "render/PathTracerProgram.h"
 
-#include "render/KindDispatchers.h"
+#include "shadergen/KindDispatchers.h"
 
 #include <chrono>
 #include <stdexcept>
@@ -8,6 +8,7 @@
 namespace render {
 
 namespace fs = std::filesystem;
+using settings::PathKernel;
 
 namespace {
 
@@ -26,7 +27,7 @@ std::string computePreamble()
            "#define COMPUTE_GROUP_HEIGHT " + std::to_string(kComputeGroupHeight) + "\n";
 }
 
-gl::Program compileAndTime(PathKernel kernel, const ShaderSource& source,
+gl::Program compileAndTime(PathKernel kernel, const shadergen::ShaderSource& source,
                            const fs::path& shaderDirectory, double& seconds)
 {
     const auto start = std::chrono::steady_clock::now();
@@ -47,19 +48,20 @@ int groupsCovering(int pixels, int groupSide)
 
 }  // namespace
 
-ShaderSource assemblePathTracerSource(const SceneShaderCode& code, const fs::path& shaderDirectory,
-                                      PathKernel kernel)
+shadergen::ShaderSource assemblePathTracerSource(const shadergen::SceneShaderCode& code,
+                                                 const fs::path& shaderDirectory,
+                                                 PathKernel kernel)
 {
     if (kernel == PathKernel::Automatic)
         throw std::invalid_argument("assemblePathTracerSource needs a kernel chosen");
     const fs::path modules = shaderDirectory / "modules";
-    ShaderSource source;
+    shadergen::ShaderSource source;
     const bool compute = kernel == PathKernel::Compute;
     source.add("<preamble: features of the scene>",
                (compute ? computePreamble() : std::string(kFragmentVersion)) + code.defines);
     auto module = [&](const char* name) { source.addFile(modules / name, shaderDirectory); };
 
-    const bool specialized = specializesShapes(code.variant);
+    const bool specialized = shadergen::specializesShapes(code.variant);
     module("constants.glsl");
     module("work_counters.glsl");
     module("rng.glsl");
@@ -86,9 +88,9 @@ ShaderSource assemblePathTracerSource(const SceneShaderCode& code, const fs::pat
     module("camera.glsl");
     module("fresnel.glsl");
     module("pigments.glsl");
-    source.add("<generated: pigmentColor over the pigment kinds>", pigmentDispatcher());
+    source.add("<generated: pigmentColor over the pigment kinds>", shadergen::pigmentDispatcher());
     module("materials.glsl");
-    source.add("<generated: the BSDF dispatchers over the materials>", materialDispatchers());
+    source.add("<generated: the BSDF dispatchers over the materials>", shadergen::materialDispatchers());
     module("ray_queries.glsl");
     if (code.exactGeometry) {
         source.add("<generated: the scene's exact intersections>", code.exactFunctions);
@@ -106,43 +108,10 @@ ShaderSource assemblePathTracerSource(const SceneShaderCode& code, const fs::pat
 
 std::string fullscreenVertexSource(const fs::path& shaderDirectory)
 {
-    return kFragmentVersion + readTextFile(shaderDirectory / "modules" / "fullscreen.vert");
+    return kFragmentVersion + shadergen::readTextFile(shaderDirectory / "modules" / "fullscreen.vert");
 }
 
-bool computeKernelAvailable()
-{
-    GLint major = 0;
-    GLint minor = 0;
-    glGetIntegerv(GL_MAJOR_VERSION, &major);
-    glGetIntegerv(GL_MINOR_VERSION, &minor);
-    return major > 4 || (major == 4 && minor >= 3);
-}
-
-KernelChoice chooseKernel(PathKernel asked)
-{
-    const GLubyte* renderer = glGetString(GL_RENDERER);
-    const std::string rendererName =
-        renderer != nullptr ? reinterpret_cast<const char*>(renderer) : "";
-    switch (asked) {
-    case PathKernel::Fragment:
-        return {PathKernel::Fragment, "asked for (--kernel fragment)"};
-    case PathKernel::Compute:
-        if (!computeKernelAvailable()) {
-            const GLubyte* version = glGetString(GL_VERSION);
-            throw std::runtime_error(
-                "the compute kernel needs OpenGL 4.3; this context (" + rendererName +
-                ") offers " +
-                (version != nullptr ? reinterpret_cast<const char*>(version) : "none") +
-                ": use --kernel fragment");
-        }
-        return {PathKernel::Compute, "asked for (--kernel compute)"};
-    case PathKernel::Automatic:
-        break;
-    }
-    return automaticKernel(rendererName, computeKernelAvailable());
-}
-
-PathTracerProgram::PathTracerProgram(const ShaderSource& source, PathKernel kernel,
+PathTracerProgram::PathTracerProgram(const shadergen::ShaderSource& source, PathKernel kernel,
                                      const fs::path& shaderDirectory)
     : kernel_(kernel), program_(compileAndTime(kernel, source, shaderDirectory, compileSeconds_))
 {

@@ -2,9 +2,10 @@
 #include "gl/Shader.h"
 #include "gl/VertexArray.h"
 #include "render/AccumulationTargets.h"
-#include "render/PathKernel.h"
-#include "render/SceneShaderGenerator.h"
-#include "render/ShaderSource.h"
+#include "render/KernelChoice.h"
+#include "settings/PathKernel.h"
+#include "shadergen/SceneShaderGenerator.h"
+#include "shadergen/ShaderSource.h"
 
 #include <filesystem>
 #include <string>
@@ -15,19 +16,12 @@ namespace render {
 // modules in shaders/modules/ (only those its features need), the scene's user SDF files and
 // the generated scene code, ending with the kernel's entry module; see
 // assemblePathTracerSource for the order.
-ShaderSource assemblePathTracerSource(const SceneShaderCode& code,
-                                      const std::filesystem::path& shaderDirectory,
-                                      PathKernel kernel = PathKernel::Fragment);
+shadergen::ShaderSource assemblePathTracerSource(
+    const shadergen::SceneShaderCode& code, const std::filesystem::path& shaderDirectory,
+    settings::PathKernel kernel = settings::PathKernel::Fragment);
 
 // The vertex shader every pass uses: one triangle over the viewport.
 std::string fullscreenVertexSource(const std::filesystem::path& shaderDirectory);
-
-// Whether the context now current runs compute shaders (OpenGL 4.3).
-bool computeKernelAvailable();
-// The kernel `asked` stands for in the context now current (Automatic: automaticKernel's
-// choice for its GL_RENDERER). Throws std::runtime_error for Compute where the context has
-// no compute shaders.
-KernelChoice chooseKernel(PathKernel asked);
 
 // A rectangle of pixels, from the image's lower-left corner.
 struct PixelRegion {
@@ -41,10 +35,10 @@ struct PixelRegion {
 class PathTracerProgram {
 public:
     // `source` as render/ScenePreparation assembles it for `kernel` (Fragment or Compute).
-    PathTracerProgram(const ShaderSource& source, PathKernel kernel,
+    PathTracerProgram(const shadergen::ShaderSource& source, settings::PathKernel kernel,
                       const std::filesystem::path& shaderDirectory);
 
-    PathKernel kernel() const { return kernel_; }
+    settings::PathKernel kernel() const { return kernel_; }
     const gl::Program& program() const { return program_; }
     double compileSeconds() const { return compileSeconds_; }
 
@@ -56,7 +50,7 @@ public:
                int imageWidth, int imageHeight, const gl::VertexArray& triangle) const;
 
 private:
-    PathKernel kernel_;
+    settings::PathKernel kernel_;
     // Declared before the program: the program's initialiser measures into it.
     double compileSeconds_ = 0.0;
     gl::Program program_;

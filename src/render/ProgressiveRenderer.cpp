@@ -42,21 +42,23 @@ void checkRenderSize(int width, int height)
 }
 
 ProgressiveRenderer::ProgressiveRenderer(const scene::Scene& scene, int width, int height,
-                                         const RenderSettings& settings)
+                                         const settings::RenderSettings& settings)
     : ProgressiveRenderer(chooseKernel(settings.kernel), scene, width, height, settings)
 {
 }
 
 ProgressiveRenderer::ProgressiveRenderer(const KernelChoice& kernel, const scene::Scene& scene,
-                                         int width, int height, const RenderSettings& settings)
-    : ProgressiveRenderer(prepareScene(scene, shaderBuild(settings), defaultShaderDirectory(),
-                                       kernel.kernel),
+                                         int width, int height,
+                                         const settings::RenderSettings& settings)
+    : ProgressiveRenderer(prepareScene(scene, shadergen::shaderBuild(settings),
+                                       defaultShaderDirectory(), kernel.kernel),
                           kernel, width, height, settings)
 {
 }
 
 ProgressiveRenderer::ProgressiveRenderer(PreparedScene prepared, const KernelChoice& kernel,
-                                         int width, int height, const RenderSettings& settings)
+                                         int width, int height,
+                                         const settings::RenderSettings& settings)
     : settings_(settings),
       kernel_(kernel),
       scene_(std::move(prepared.visible)),
@@ -113,7 +115,7 @@ void ProgressiveRenderer::uploadAll()
 ReloadDecision ProgressiveRenderer::setScene(const scene::Scene& original,
                                              const std::vector<std::filesystem::path>& changedFiles)
 {
-    PreparedScene prepared = prepareScene(original, shaderBuild(settings_),
+    PreparedScene prepared = prepareScene(original, shadergen::shaderBuild(settings_),
                                           defaultShaderDirectory(), kernel_.kernel);
     const ReloadDecision decision =
         decideReload(code_, uniforms_, prepared.code, prepared.uniforms, changedFiles);
@@ -153,11 +155,11 @@ void ProgressiveRenderer::setCamera(const scene::Camera& camera)
     clearAccumulation();
 }
 
-void ProgressiveRenderer::setSettings(const RenderSettings& settings)
+void ProgressiveRenderer::setSettings(const settings::RenderSettings& settings)
 {
-    const ShaderVariant variant = settings_.variant;
+    const settings::ShaderVariant variant = settings_.variant;
     const bool switchableEnvironment = settings_.switchableEnvironment;
-    const PathKernel kernel = settings_.kernel;
+    const settings::PathKernel kernel = settings_.kernel;
     settings_ = settings;
     settings_.variant = variant;
     settings_.switchableEnvironment = switchableEnvironment;
@@ -180,7 +182,7 @@ void ProgressiveRenderer::resize(int width, int height)
     uploadAll();
 }
 
-void ProgressiveRenderer::resumeFrom(const Accumulation& accumulation)
+void ProgressiveRenderer::resumeFrom(const film::Accumulation& accumulation)
 {
     if (accumulation.width() != width() || accumulation.height() != height())
         throw std::invalid_argument(
@@ -262,7 +264,7 @@ bool ProgressiveRenderer::renderFrame(const std::function<bool()>& keepGoing, in
     return true;
 }
 
-void ProgressiveRenderer::setTileSampleTargets(const TileSampleTargets& targets)
+void ProgressiveRenderer::setTileSampleTargets(const film::TileSampleTargets& targets)
 {
     if (targets.tileSize < 1 || targets.columns * targets.tileSize < width() ||
         targets.rows * targets.tileSize < height() ||
@@ -359,12 +361,12 @@ io::Image ProgressiveRenderer::radiance() const
 
 io::Image ProgressiveRenderer::sampleStatistics() const
 {
-    return render::sampleStatistics(accumulation());
+    return film::sampleStatistics(accumulation());
 }
 
-Accumulation ProgressiveRenderer::accumulation() const
+film::Accumulation ProgressiveRenderer::accumulation() const
 {
-    Accumulation state;
+    film::Accumulation state;
     state.estimate = readTarget(targets_.previous().estimate, 4);
     state.moments = readTarget(targets_.previous().moments, 4);
     return state;

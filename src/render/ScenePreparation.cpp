@@ -6,8 +6,9 @@
 
 namespace render {
 
-PreparedScene prepareScene(const scene::Scene& scene, const ShaderBuild& build,
-                           const std::filesystem::path& shaderDirectory, PathKernel kernel)
+PreparedScene prepareScene(const scene::Scene& scene, const shadergen::ShaderBuild& build,
+                           const std::filesystem::path& shaderDirectory,
+                           settings::PathKernel kernel)
 {
     PreparedScene prepared;
     prepared.visible = scene::dropInvisibleObjects(scene);

@@ -4,11 +4,11 @@
 // and the path-tracing shader is assembled for a kernel. Pure (it reads shader files, never GL state): the
 // renderer, `--features`, `--print-shader` and the benchmarks all prepare a scene here, so
 // they all see the same visible scene, features and source.
-#include "render/PathKernel.h"
-#include "render/RenderSettings.h"
-#include "render/SceneShaderGenerator.h"
+#include "settings/PathKernel.h"
+#include "settings/RenderSettings.h"
+#include "shadergen/SceneShaderGenerator.h"
 #include "render/SceneUniforms.h"
-#include "render/ShaderSource.h"
+#include "shadergen/ShaderSource.h"
 #include "scene/Scene.h"
 
 #include <filesystem>
@@ -17,15 +17,15 @@ namespace render {
 
 struct PreparedScene {
     scene::Scene visible;      // without its invisible objects (scene/InvisibleObjects.h)
-    SceneShaderCode code;      // code.features: what the shader is built for
+    shadergen::SceneShaderCode code;      // code.features: what the shader is built for
     SceneUniforms uniforms;    // every number the shader reads from the scene
-    ShaderSource pathTracerSource;  // for the kernel asked (fragment or compute)
+    shadergen::ShaderSource pathTracerSource;  // for the kernel asked (fragment or compute)
 };
 
 // `kernel`: Fragment or Compute (the renderer chooses Automatic's in its context).
-PreparedScene prepareScene(const scene::Scene& scene, const ShaderBuild& build,
+PreparedScene prepareScene(const scene::Scene& scene, const shadergen::ShaderBuild& build,
                            const std::filesystem::path& shaderDirectory,
-                           PathKernel kernel = PathKernel::Fragment);
+                           settings::PathKernel kernel = settings::PathKernel::Fragment);
 
 // The project's shaders/ folder (FileLookup::dataDirectory()).
 std::filesystem::path defaultShaderDirectory();

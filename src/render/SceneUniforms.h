@@ -1,6 +1,6 @@
 #pragma once
-#include "render/RenderSettings.h"
-#include "render/SceneShaderGenerator.h"
+#include "settings/RenderSettings.h"
+#include "shadergen/SceneShaderGenerator.h"
 #include "scene/Scene.h"
 #include "scene/SceneBounds.h"
 
@@ -39,7 +39,7 @@ struct SceneUniforms {
     bool operator!=(const SceneUniforms& other) const { return !(*this == other); }
 };
 
-SceneUniforms packSceneUniforms(const scene::Scene& scene, const SceneShaderCode& code);
+SceneUniforms packSceneUniforms(const scene::Scene& scene, const shadergen::SceneShaderCode& code);
 
 // Emitted power of each light, the quantity lights are selected by: 4 pi I for a point
 // light, 4 pi^2 r^2 L for a sphere of radiance L (channels averaged).
@@ -47,7 +47,7 @@ std::vector<double> lightPowers(const scene::Scene& scene);
 
 // Sets every scene and settings uniform of `program` (which must be in use).
 void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
-                    const SceneShaderCode& code, const RenderSettings& settings, int width,
+                    const shadergen::SceneShaderCode& code, const settings::RenderSettings& settings, int width,
                     int height);
 
 }  // namespace render

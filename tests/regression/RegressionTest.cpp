@@ -2,7 +2,7 @@
 // count with a seed of its own and compared with its reference by the noise-aware
 // comparison (support/ImageComparison.h, derived in tests/README.md). On failure the
 // side-by-side picture is written into the build tree and its path printed.
-#include "render/PathTracerProgram.h"
+#include "render/KernelChoice.h"
 #include "support/ImageComparison.h"
 #include "support/ReferenceImage.h"
 #include "support/RegressionCases.h"
@@ -26,7 +26,7 @@ void PrintTo(const RegressionCase& regressionCase, std::ostream* out)
 namespace {
 
 void expectAgreesWithReference(const RegressionCase& regressionCase,
-                               const render::RenderSettings& settings, const std::string& label)
+                               const settings::RenderSettings& settings, const std::string& label)
 {
     RenderedImage reference;
     ASSERT_NO_THROW(reference = readReference(referencePath(regressionCase)))
@@ -76,8 +76,8 @@ class GeneralShaderRegression : public ::testing::TestWithParam<RegressionCase> 
 
 TEST_P(GeneralShaderRegression, GeneralShaderAgreesWithReference)
 {
-    render::RenderSettings settings = settingsWithSeed(kTestSeed);
-    settings.variant = render::ShaderVariant::General;
+    settings::RenderSettings settings = settingsWithSeed(kTestSeed);
+    settings.variant = settings::ShaderVariant::General;
     expectAgreesWithReference(GetParam(), settings, "general");
 }
 
@@ -105,8 +105,8 @@ TEST_P(ComputeKernelRegression, ComputeKernelAgreesWithReference)
 {
     if (!render::computeKernelAvailable())
         GTEST_SKIP() << "this context has no compute shaders (OpenGL 4.3)";
-    render::RenderSettings settings = settingsWithSeed(kTestSeed);
-    settings.kernel = render::PathKernel::Compute;
+    settings::RenderSettings settings = settingsWithSeed(kTestSeed);
+    settings.kernel = settings::PathKernel::Compute;
     expectAgreesWithReference(GetParam(), settings, "compute-kernel");
 }
 

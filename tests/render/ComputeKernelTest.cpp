@@ -1,11 +1,11 @@
-// The compute kernel (render/PathKernel.h) against the fragment kernel, in the context the
+// The compute kernel (settings/PathKernel.h) against the fragment kernel, in the context the
 // executable made (OSMesa, or EGL: ctest runs both): the two run the same per-pixel code
 // (shaders/modules/path_tracer_main.glsl), so for one seed every pixel holds the same number
 // of samples, of the same sample indices, and the images agree within noise. (On llvmpipe the
 // radiance agrees bit for bit, but the fragment stage flushes denormals to zero and compute
 // does not; a GPU may contract arithmetic differently in the two stages: so no more than
 // agreement within noise is asked.)
-#include "render/PathTracerProgram.h"
+#include "render/KernelChoice.h"
 #include "render/ProgressiveRenderer.h"
 #include "support/ImageComparison.h"
 #include "support/RenderRun.h"
@@ -26,9 +26,9 @@ protected:
             GTEST_SKIP() << "this context has no compute shaders (OpenGL 4.3)";
     }
 
-    static render::RenderSettings settings(render::PathKernel kernel)
+    static settings::RenderSettings settings(settings::PathKernel kernel)
     {
-        render::RenderSettings settings = settingsWithSeed(kTestSeedForKernels);
+        settings::RenderSettings settings = settingsWithSeed(kTestSeedForKernels);
         settings.kernel = kernel;
         return settings;
     }
@@ -54,8 +54,8 @@ void expectSameSampleCounts(const RenderedImage& compute, const RenderedImage& f
 TEST_F(ComputeKernel, TracesEveryPixelsSamplesAsTheFragmentKernelDoes)
 {
     const scene::Scene scene = classicScene1();
-    render::RenderSettings compute = settings(render::PathKernel::Compute);
-    render::RenderSettings fragment = settings(render::PathKernel::Fragment);
+    settings::RenderSettings compute = settings(settings::PathKernel::Compute);
+    settings::RenderSettings fragment = settings(settings::PathKernel::Fragment);
     compute.secondsPerBand = fragment.secondsPerBand = 0.0;  // whole frames
     const RenderedImage computed = renderScene(scene, 64, 48, 16, compute);
     const RenderedImage reference = renderScene(scene, 64, 48, 16, fragment);
@@ -82,9 +82,9 @@ TEST_F(ComputeKernel, TracesEveryPixelsSamplesAsTheFragmentKernelDoes)
 TEST_F(ComputeKernel, FramesInBandsCoverEveryRowOnce)
 {
     const scene::Scene scene = classicScene1();
-    render::RenderSettings banded = settings(render::PathKernel::Compute);
+    settings::RenderSettings banded = settings(settings::PathKernel::Compute);
     banded.secondsPerBand = 1e-9;
-    render::RenderSettings whole = settings(render::PathKernel::Fragment);
+    settings::RenderSettings whole = settings(settings::PathKernel::Fragment);
     whole.secondsPerBand = 0.0;
     const RenderedImage computed = renderScene(scene, 37, 29, 4, banded);
     const RenderedImage reference = renderScene(scene, 37, 29, 4, whole);
@@ -101,12 +101,12 @@ TEST_F(ComputeKernel, FramesInBandsCoverEveryRowOnce)
 TEST_F(ComputeKernel, APreviewFillsTheCornerTheFragmentKernelFills)
 {
     const scene::Scene scene = classicScene1();
-    render::ProgressiveRenderer compute(scene, 40, 30, settings(render::PathKernel::Compute));
-    render::ProgressiveRenderer fragment(scene, 40, 30, settings(render::PathKernel::Fragment));
+    render::ProgressiveRenderer compute(scene, 40, 30, settings(settings::PathKernel::Compute));
+    render::ProgressiveRenderer fragment(scene, 40, 30, settings(settings::PathKernel::Fragment));
     compute.renderPreview(3, 2);
     fragment.renderPreview(3, 2);
-    const render::Accumulation computed = compute.accumulation();
-    const render::Accumulation reference = fragment.accumulation();
+    const film::Accumulation computed = compute.accumulation();
+    const film::Accumulation reference = fragment.accumulation();
     int traced = 0;
     for (int y = 0; y < 30; ++y)
         for (int x = 0; x < 40; ++x) {
@@ -120,8 +120,8 @@ TEST_F(ComputeKernel, APreviewFillsTheCornerTheFragmentKernelFills)
 TEST_F(ComputeKernel, IsTheKernelTheRendererReportsWhenAskedFor)
 {
     const render::ProgressiveRenderer renderer(classicScene1(), 8, 8,
-                                               settings(render::PathKernel::Compute));
-    EXPECT_EQ(renderer.kernel().kernel, render::PathKernel::Compute);
+                                               settings(settings::PathKernel::Compute));
+    EXPECT_EQ(renderer.kernel().kernel, settings::PathKernel::Compute);
 }
 
 }  // namespace

@@ -1,14 +1,14 @@
-// The kernel --kernel auto runs on each renderer (render/PathKernel.h): decided per renderer,
+// The kernel --kernel auto runs on each renderer (render/KernelChoice.h): decided per renderer,
 // from the table of measured (or documented) winners; the fragment kernel wherever compute
 // shaders are missing or nothing is known.
-#include "render/PathKernel.h"
+#include "render/KernelChoice.h"
 
 #include <gtest/gtest.h>
 
 namespace render_tests {
 namespace {
 
-using render::PathKernel;
+using settings::PathKernel;
 
 TEST(AutomaticKernel, OnLlvmpipeIsTheOneMeasuredFaster)
 {
@@ -43,8 +43,8 @@ TEST(AutomaticKernel, OnARendererNotMeasuredIsTheFragmentKernelAndSaysSo)
 TEST(PathKernelNames, ReadBackAsTheKernelTheyName)
 {
     for (PathKernel kernel : {PathKernel::Automatic, PathKernel::Fragment, PathKernel::Compute})
-        EXPECT_EQ(render::pathKernelNamed(render::pathKernelName(kernel)), kernel);
-    EXPECT_FALSE(render::pathKernelNamed("vertex").has_value());
+        EXPECT_EQ(settings::pathKernelNamed(settings::pathKernelName(kernel)), kernel);
+    EXPECT_FALSE(settings::pathKernelNamed("vertex").has_value());
 }
 
 }  // namespace

@@ -5,8 +5,8 @@
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
 #include "render/PathTracerProgram.h"
-#include "render/ShaderCodes.h"
-#include "render/ShaderSource.h"
+#include "shadergen/ShaderCodes.h"
+#include "shadergen/ShaderSource.h"
 #include "support/TestPaths.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -15,10 +15,10 @@ namespace sampling_tests {
 
 namespace {
 
-render::ShaderSource probeSource()
+shadergen::ShaderSource probeSource()
 {
     const auto shaders = testing_support::sourceDirectory() / "shaders";
-    render::ShaderSource source;
+    shadergen::ShaderSource source;
     // What the modules expect the scene's preamble to define: only Blinn-Phong among the
     // materials, one element in each scene array (unused here), and the kinds' codes.
     source.add("<preamble: the sampling probe>",
@@ -28,7 +28,7 @@ render::ShaderSource probeSource()
                "#define OBJECT_ARRAY_SIZE 1\n"
                "#define PIGMENT_ARRAY_SIZE 1\n#define FINISH_ARRAY_SIZE 1\n"
                "#define LIGHT_ARRAY_SIZE 1\n" +
-                   render::shaderCodeDefines());
+                   shadergen::shaderCodeDefines());
     for (const char* module :
          {"constants.glsl", "rng.glsl", "sampler.glsl", "sampling.glsl", "scene_data.glsl", "fresnel.glsl",
           "materials.glsl"})
@@ -40,7 +40,7 @@ render::ShaderSource probeSource()
 
 gl::Program compileProbe()
 {
-    const render::ShaderSource fragment = probeSource();
+    const shadergen::ShaderSource fragment = probeSource();
     return gl::Program(
         render::fullscreenVertexSource(testing_support::sourceDirectory() / "shaders"),
         fragment.text(), "the sampling probe",
