@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake ninja-build g++ pkg-config
-  libglfw3-dev libglew-dev libglm-dev libosmesa6-dev
+  libglfw3-dev libglew-dev libglm-dev libosmesa6-dev libegl-dev libegl-mesa0
   libopenimageio-dev libopenexr-dev openimageio-tools
   libimgui-dev libx11-dev
   libssl-dev

@@ -198,6 +198,22 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
             line.statisticsOutput = value(argument);
         } else if (argument == "--headless") {
             line.headless = true;
+        } else if (argument == "--gl") {
+            const std::string kind = value(argument);
+            const auto named = platform::contextKindNamed(kind);
+            if (!named)
+                throw UsageError("--gl must be 'auto', 'egl', 'gpu', 'osmesa' or 'window', not '" +
+                                 kind + "'");
+            line.gl = *named;
+        } else if (argument == "--gl-device") {
+            line.glDevice = nonNegativeInteger(value(argument), "--gl-device", 1023);
+        } else if (argument == "--kernel") {
+            const std::string kernel = value(argument);
+            const auto named = settings::pathKernelNamed(kernel);
+            if (!named)
+                throw UsageError("--kernel must be 'auto', 'fragment' or 'compute', not '" +
+                                 kernel + "'");
+            line.settings.kernel = *named;
         } else if (argument == "--quiet") {
             line.quiet = true;
         } else if (argument == "--seed") {
@@ -284,6 +300,17 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
 
     if (line.action == Action::Help || line.action == Action::Version)
         return line;
+    if (line.glDevice) {
+        if (line.gl == platform::ContextKind::OsMesa || line.gl == platform::ContextKind::Window)
+            throw UsageError(std::string("--gl-device picks a GPU through EGL: it does not go "
+                                         "with --gl ") +
+                             platform::contextKindName(line.gl));
+        line.gl = platform::ContextKind::Gpu;
+    }
+    if (line.gl == platform::ContextKind::Window && line.headless)
+        throw UsageError("--headless and --gl window contradict each other: give one");
+    if (line.gl == platform::ContextKind::Window && line.resume)
+        throw UsageError("--resume renders headless: it does not go with --gl window");
     if (positional.empty())
         throw UsageError("no scene file given (see --help)");
     line.scene = positional[0];
@@ -338,8 +365,9 @@ Renders SCENE (a .in scene file) by path tracing on the GPU, WIDTH x HEIGHT pixe
 (default 640 480). Without SECONDS or --spp a window shows the image converging until it
 is closed (Escape closes it; its panel, Tab, lists the keys and mouse actions). With
 SECONDS the render runs that long, then writes the tone-mapped image as SCENE-NAME.ppm in
-the current folder (or --output). Without a display, or with --headless, rendering uses
-OSMesa and opens no window. Each option may be given once.
+the current folder (or --output). Without a display, or with --headless, rendering opens no
+window: it goes through EGL on a GPU, else EGL on Mesa's software device, else OSMesa (--gl
+says which; every summary line names the OpenGL renderer). Each option may be given once.
 
 EXR and PNG files describe themselves in their headers (samples, seeds, settings, the
 scene's SHA-256, the program); an EXR also holds each pixel's sample count and second
@@ -376,7 +404,19 @@ output:
                         new samples only; writes FILE again (or --output). The scene, size
                         and image-changing settings must be FILE's; WIDTH HEIGHT default to
                         FILE's, --seed to its first seed. Renders headless
-  --headless            render with OSMesa even when a display is available
+  --headless            render without a window even when a display is available
+  --gl KIND             which OpenGL renders: auto (default: a window where there is a
+                        display and the render is not headless; else EGL on a GPU, EGL on
+                        Mesa's software device, EGL surfaceless, OSMesa, the first that
+                        works), egl (those of EGL only), gpu (EGL on a GPU only, never on
+                        the processor: for render farms), osmesa, or window
+  --gl-device N         render on the Nth GPU EGL lists (from 0; the software device is not
+                        counted), and on no other: one shard per GPU (docs/SCALE_OUT.md).
+                        Implies --gl gpu
+  --kernel KIND         the GPU kernel that traces the paths, the same samples either way:
+                        fragment (a full-screen triangle), compute (OpenGL 4.3), or auto
+                        (default: the one measured faster on this renderer; --features
+                        says which and why)
   --seed N              random seed (default 1)
   --samples-per-frame N paths per pixel per frame (default: chosen so that a frame takes
                         about 0.5 s in a batch render, 0.15 s in a window, at most 16)
@@ -403,8 +443,10 @@ accuracy (see docs/ACCURACY.md for what each costs):
                         first four bounces; independent: random numbers for every decision
 
 shader:
-  --features            print the features SCENE uses and exit
-  --print-shader        print the fragment shader assembled for SCENE and exit
+  --features            print the features SCENE uses, the OpenGL that would render it
+                        and the kernel, and exit
+  --print-shader        print the shader assembled for SCENE and exit (the fragment
+                        kernel's, or with --kernel compute the compute kernel's)
   --no-specialize       use the general shader with every feature instead of one built
                         for the scene
   --no-culling          march every ray against every object (culling the objects a ray

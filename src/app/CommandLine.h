@@ -1,5 +1,6 @@
 #pragma once
 #include "film/AdaptiveSampling.h"
+#include "platform/ContextFactory.h"
 #include "settings/RenderSettings.h"
 
 #include <filesystem>
@@ -35,6 +36,11 @@ struct CommandLine {
     std::optional<std::filesystem::path> output;
     std::optional<std::filesystem::path> statisticsOutput;
     bool headless = false;
+    // --gl KIND: which OpenGL renders (auto: a window where there is a display and the render
+    // is not headless, else EGL, else OSMesa); --gl-device N: the Nth GPU EGL lists, and no
+    // other (it implies --gl gpu).
+    platform::ContextKind gl = platform::ContextKind::Automatic;
+    std::optional<int> glDevice;
     // --samples-per-frame was given: keep it; otherwise the render picks it (RenderCommand).
     bool samplesPerFrameGiven = false;
     bool quiet = false;

@@ -95,6 +95,13 @@ int runInfo(const std::filesystem::path& path)
             files += (files.empty() ? "" : ", ") + name;
         printLine("merged from", files);
     }
+    auto recorded = [](const std::string& value) {
+        return value.empty() ? std::string("not recorded (written before it was)") : value;
+    };
+    printLine("OpenGL context", recorded(metadata->glContext));
+    printLine("OpenGL renderer", recorded(metadata->glRenderer));
+    printLine("OpenGL version", recorded(metadata->glVersion));
+    printLine("kernel", recorded(metadata->kernel));
     printLine("program", film::describeProgram(*metadata));
     for (const film::ImageSetting& setting : film::imageSettings())
         printLine(setting.label, setting.text(metadata->settings) + "  (" + setting.option + ")");

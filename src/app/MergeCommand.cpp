@@ -92,6 +92,8 @@ film::RenderMetadata mergedMetadata(const std::vector<fs::path>& paths,
         merged.renderSeconds += input.renderSeconds;
         ranges.insert(ranges.end(), input.sampleRanges.begin(), input.sampleRanges.end());
         merged.mergedFrom.push_back(paths[i].string());
+        if (i > 0)
+            film::addRenderingDevice(merged, input);
         if (!input.interrupted.empty())
             merged.interrupted += (merged.interrupted.empty() ? "" : "; ") + paths[i].string() +
                                   ": " + input.interrupted;

@@ -13,6 +13,7 @@
 #include "io/OutputFiles.h"
 #include "platform/ContextFactory.h"
 #include "platform/GlfwWindowContext.h"
+#include "render/KernelChoice.h"
 #include "render/ProgressiveRenderer.h"
 #include "film/RenderFile.h"
 #include "render/ScenePreparation.h"
@@ -123,6 +124,24 @@ void removeStaleTemporariesOf(const std::vector<std::filesystem::path>& outputs)
                   << removed.processId << ", which no longer runs" << std::endl;
 }
 
+platform::ContextRequest contextRequest(const CommandLine& line)
+{
+    platform::ContextRequest request;
+    request.kind = line.gl;
+    request.headless = line.headless;
+    request.gpuIndex = line.glDevice;
+    request.windowWidth = line.width;
+    request.windowHeight = line.height;
+    request.windowTitle = "raytracer - " + line.scene.filename().string();
+    return request;
+}
+
+std::string describeRenderingDevice(const platform::ContextIdentity& gl,
+                                    const render::KernelChoice& kernel)
+{
+    return gl.describe() + ", " + settings::pathKernelName(kernel.kernel) + " kernel";
+}
+
 int runRender(const CommandLine& commandLine, const InterruptWatch& interrupt)
 {
     CommandLine line = commandLine;
@@ -150,17 +169,16 @@ int runRender(const CommandLine& commandLine, const InterruptWatch& interrupt)
     }
     // A resumed render goes on where the file left it: no window, whose camera and settings
     // could leave that.
-    const bool headless = line.headless || line.resume || !platform::displayAvailable();
-    if (headless && !line.isBatch())
-        throw UsageError(std::string(line.headless ? "--headless" : "there is no display, so") +
+    platform::ContextRequest request = contextRequest(line);
+    request.headless = line.headless || line.resume;
+    if (platform::makesHeadlessContext(request) && !line.isBatch())
+        throw UsageError(std::string(line.headless ? "--headless"
+                                     : line.gl != platform::ContextKind::Automatic
+                                         ? "--gl " + std::string(platform::contextKindName(line.gl))
+                                         : "there is no display, so") +
                          " renders need an end: give SECONDS or --spp (the image is written "
                          "to a file)");
 
-    platform::ContextRequest request;
-    request.headless = headless;
-    request.windowWidth = line.width;
-    request.windowHeight = line.height;
-    request.windowTitle = "raytracer - " + line.scene.filename().string();
     const auto setupStart = std::chrono::steady_clock::now();
     auto context = platform::createContext(request);
     settings::RenderSettings settings = line.settings;
@@ -258,6 +276,7 @@ int runRender(const CommandLine& commandLine, const InterruptWatch& interrupt)
     char setup[64];
     std::snprintf(setup, sizeof setup, " (setup %.2f s)", setupSeconds);
     summary += setup;
+    summary += " [" + describeRenderingDevice(context->identity(), renderer.kernel()) + "]";
 
     // An image without a sample is all black, and a resumed render without a new sample is
     // the file it resumed: neither is written, nor over an older file.
@@ -296,7 +315,8 @@ int runRender(const CommandLine& commandLine, const InterruptWatch& interrupt)
                 fromWindow = true;
             }
         }
-        film::RenderMetadata metadata = describeRender(line.scene, sceneDigest, renderer);
+        film::RenderMetadata metadata =
+            describeRender(line.scene, sceneDigest, renderer, context->identity());
         metadata.renderSeconds = renderSeconds;
         if (resumed) {
             // The new samples of each pixel take the indices from its count on: from the
@@ -308,6 +328,13 @@ int runRender(const CommandLine& commandLine, const InterruptWatch& interrupt)
             metadata.sampleRanges = film::normalizedRanges(ranges);
             metadata.renderSeconds += resumed->metadata.renderSeconds;
             metadata.mergedFrom = resumed->metadata.mergedFrom;
+            // The samples held came from the resumed file's device, the new ones from this.
+            film::RenderMetadata devices = resumed->metadata;
+            film::addRenderingDevice(devices, metadata);
+            metadata.glContext = devices.glContext;
+            metadata.glRenderer = devices.glRenderer;
+            metadata.glVersion = devices.glVersion;
+            metadata.kernel = devices.kernel;
         }
         if (interrupted)
             metadata.interrupted =
@@ -336,16 +363,29 @@ int printFeatures(const CommandLine& line)
     const render::PreparedScene prepared =
         render::prepareScene(scene::parseSceneFile(line.scene),
                              shadergen::shaderBuild(line.settings), render::defaultShaderDirectory());
-    std::cout << prepared.code.features.describe();
+    std::cout << prepared.code.features.describe() << std::flush;
+    // The OpenGL a headless render of this command line would use (a window only where
+    // --gl window asks for one), and the kernel it would run there.
+    platform::ContextRequest request = contextRequest(line);
+    request.headless = true;
+    const auto context = platform::createContext(request);
+    const render::KernelChoice kernel = render::chooseKernel(line.settings.kernel);
+    std::cout << "OpenGL:        " << context->identity().describe() << "\n"
+              << "kernel:        " << settings::pathKernelName(kernel.kernel) << " ("
+              << kernel.reason << ")\n";
     return kExitSuccess;
 }
 
 int printShader(const CommandLine& line)
 {
-    const render::PreparedScene prepared =
-        render::prepareScene(scene::parseSceneFile(line.scene),
-                             shadergen::shaderBuild(line.settings), render::defaultShaderDirectory());
-    std::cout << prepared.fragmentSource.text();
+    // No context is made: auto prints the fragment kernel's shader.
+    const settings::PathKernel kernel = line.settings.kernel == settings::PathKernel::Compute
+                                            ? settings::PathKernel::Compute
+                                            : settings::PathKernel::Fragment;
+    const render::PreparedScene prepared = render::prepareScene(
+        scene::parseSceneFile(line.scene), shadergen::shaderBuild(line.settings),
+        render::defaultShaderDirectory(), kernel);
+    std::cout << prepared.pathTracerSource.text();
     return kExitSuccess;
 }
 

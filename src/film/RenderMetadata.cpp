@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace film {
 
@@ -201,6 +202,12 @@ std::vector<io::ImageAttribute> metadataAttributes(const RenderMetadata& metadat
     attributes.push_back({kPrefix + "renderSeconds", seconds});
     for (const ImageSetting& setting : imageSettings())
         attributes.push_back({kPrefix + setting.key, setting.text(metadata.settings)});
+    for (const auto& [key, value] : {std::pair{"glContext", &metadata.glContext},
+                                     std::pair{"glRenderer", &metadata.glRenderer},
+                                     std::pair{"glVersion", &metadata.glVersion},
+                                     std::pair{"kernel", &metadata.kernel}})
+        if (!value->empty())
+            attributes.push_back({kPrefix + key, *value});
     attributes.push_back({kPrefix + "program", metadata.program});
     if (!metadata.gitCommit.empty())
         attributes.push_back({kPrefix + "gitCommit", metadata.gitCommit});
@@ -270,6 +277,10 @@ std::optional<RenderMetadata> metadataFromAttributes(
                                              "', which is not one of " + setting.option);
     metadata.program = required("program");
     metadata.gitCommit = values["gitCommit"];
+    metadata.glContext = values["glContext"];
+    metadata.glRenderer = values["glRenderer"];
+    metadata.glVersion = values["glVersion"];
+    metadata.kernel = values["kernel"];
     metadata.interrupted = values["interrupted"];
     std::istringstream merged(values["mergedFrom"]);
     for (std::string line; std::getline(merged, line);)
@@ -303,6 +314,23 @@ std::optional<MetadataDifference> imageDifference(const RenderMetadata& first,
         return MetadataDifference{"the program build", describeProgram(first),
                                   describeProgram(second)};
     return std::nullopt;
+}
+
+void addRenderingDevice(RenderMetadata& metadata, const RenderMetadata& other)
+{
+    auto add = [](std::string& values, const std::string& value) {
+        if (value.empty())
+            return;
+        std::istringstream list(values);
+        for (std::string item; std::getline(list, item, ';');)
+            if (item == value || item == " " + value)
+                return;
+        values += (values.empty() ? "" : "; ") + value;
+    };
+    add(metadata.glContext, other.glContext);
+    add(metadata.glRenderer, other.glRenderer);
+    add(metadata.glVersion, other.glVersion);
+    add(metadata.kernel, other.kernel);
 }
 
 std::string describeProgram(const RenderMetadata& metadata)

@@ -36,6 +36,16 @@ struct RenderMetadata {
     double renderSeconds = 0.0;
     // Empty unless the render was interrupted; then how it stopped.
     std::string interrupted;
+    // What rendered the samples: the OpenGL context's kind, GL_RENDERER and GL_VERSION
+    // (platform/GlContext.h's ContextIdentity), and the kernel that traced them
+    // (settings/PathKernel.h). For the record only: renders on other devices or kernels
+    // estimate the same image and may be merged. A render resumed or merged from others
+    // lists each distinct value, "; " between them. Empty in files written before they were
+    // recorded.
+    std::string glContext;
+    std::string glRenderer;
+    std::string glVersion;
+    std::string kernel;
     std::string program;    // "raytracer 1.0.0"
     std::string gitCommit;  // empty when the program was not built from a git checkout
     // The files a merge read, in order.
@@ -77,6 +87,9 @@ struct MetadataDifference {
 };
 std::optional<MetadataDifference> imageDifference(const RenderMetadata& first,
                                                   const RenderMetadata& second);
+
+// Adds `other`'s context, renderer, version and kernel to `metadata`'s, each value once.
+void addRenderingDevice(RenderMetadata& metadata, const RenderMetadata& other);
 
 // "raytracer 1.0.0, commit 0123abcd..." or "raytracer 1.0.0 (no git commit)".
 std::string describeProgram(const RenderMetadata& metadata);

@@ -1,4 +1,6 @@
 #pragma once
+#include "settings/PathKernel.h"
+
 #include <cstdint>
 
 namespace settings {
@@ -68,6 +70,9 @@ struct RenderSettings {
     // have a closed form (shaders/modules/ray_queries_exact.glsl): the reference that the
     // tests and docs/ACCURACY.md judge the sphere tracer's geometric error against.
     bool exactGeometry = false;
+    // The GPU kernel that traces the paths (settings/PathKernel.h): the same samples either
+    // way; Automatic takes the one measured faster on the renderer at hand.
+    PathKernel kernel = PathKernel::Automatic;
     // Count work instead of light (ShaderBuild::profileCounters), for bench_throughput.
     bool profileCounters = false;
     // March boxes, cylinders and disks (ShaderBuild::marchBoxesCylindersAndDisks), for
