@@ -5,8 +5,8 @@ set -euo pipefail
 
 packages=(
   cmake ninja-build g++ pkg-config
-  libglfw3-dev libglew-dev libglm-dev libosmesa6-dev
-  libopenimageio-dev openimageio-tools
+  libglfw3-dev libglew-dev libglm-dev libosmesa6-dev libegl-dev libegl-mesa0
+  libopenimageio-dev libopenexr-dev openimageio-tools
   libimgui-dev libx11-dev
   libssl-dev
   parallel slurm-wlm munge

@@ -7,10 +7,16 @@
 #     images, and the hit tolerance, step limit and over-relaxation judged against it;
 #   - the Sobol sampler against independent samples, for every classic and figure scene:
 #     noise at equal sample count and at equal time, convergence, time per sample;
-#   - 1- and 4-spp images of a flat lit plane, to look for the sampler's structured artefacts.
+#   - 1- and 4-spp images of a flat lit plane, to look for the sampler's structured artefacts;
+#   - marched solids where they meet other surfaces (issue 36, bench/scenes/creases/): the
+#     default render against exact intersection where the solid is a sharp CSG block of
+#     closed-form shapes, against the converged march where none exists, the converged march
+#     against exact intersection and against itself at half its tolerance, and, with
+#     PER_PIXEL_BASELINE set to another build's raytracer, that build's default render too.
 #
 #   tools/per-pixel-report.sh            renders what is missing from the cache, then writes
 #   PER_PIXEL_REFRESH=1 tools/per-pixel-report.sh   renders everything again
+#   PER_PIXEL_ONLY=creases tools/per-pixel-report.sh   the marched solids' section alone
 #
 # Renders go to build-accuracy/per-pixel/ (git ignores it); each is an EXR with its sample
 # counts and second moments, so each step of a sample-count ladder resumes the previous one.
@@ -23,6 +29,8 @@ size=(160 120)
 ladder=(4 16 64 256 1024)
 exact_spp=1024
 settings_spp=256
+# The marched solids' section: default renders up to this, references at this.
+crease_spp="${PER_PIXEL_CREASE_SPP:-1024}"
 mkdir -p "$cache"
 
 "$root/tools/install-dependencies.sh" python3-matplotlib
@@ -42,10 +50,23 @@ settings=("--hit-tolerance 0.0625" "--hit-tolerance 0.125" "--hit-tolerance 0.5"
 timings="$cache/timings.csv"
 [ -f "$timings" ] || echo "scene,variant,seed,from_spp,to_spp,seconds" >"$timings"
 
+# The converged march, the reference for marched solids that have no exact intersection: a
+# sixteenth of the default hit tolerance and eight times its steps; and the same at half that
+# tolerance, which must not differ from it (docs/ACCURACY.md).
+converged=(--hit-tolerance 0.015625 --max-steps 4096)
+halved=(--hit-tolerance 0.0078125 --max-steps 8192)
+
+scene_file() {
+  if [ -f "$root/scenes/$1.in" ]; then echo "$root/scenes/$1.in"; else echo "$root/bench/scenes/creases/$1.in"; fi
+}
+
 # render NAME VARIANT SEED SPP [options...]: NAME-VARIANT-sSEED-SPP.exr, resuming the
-# largest cached smaller count of the same ladder when there is one.
+# largest cached smaller count of the same ladder when there is one. RENDER_PROGRAM, when
+# set, renders instead of this build's program.
 render() {
   local name="$1" variant="$2" seed="$3" spp="$4"
+  local program="${RENDER_PROGRAM:-$program}" scene
+  scene="$(scene_file "$name")"
   shift 4
   local out="$cache/$name-$variant-s$seed-$spp.exr"
   if [ -f "$out" ] && [ -z "${PER_PIXEL_REFRESH:-}" ]; then return 0; fi
@@ -59,10 +80,10 @@ render() {
   local start end
   start=$(date +%s.%N)
   if [ -n "$previous" ]; then
-    "$program" "$root/scenes/$name.in" --resume "$previous" --spp "$spp" --quiet \
+    "$program" "$scene" --resume "$previous" --spp "$spp" --quiet \
       --headless --output "$out" "$@"
   else
-    "$program" "$root/scenes/$name.in" "${size[@]}" --spp "$spp" --seed "$seed" --quiet \
+    "$program" "$scene" "${size[@]}" --spp "$spp" --seed "$seed" --quiet \
       --headless --output "$out" "$@"
   fi
   end=$(date +%s.%N)
@@ -74,7 +95,9 @@ exact_capable() {
     --output "$cache/probe.exr" >/dev/null 2>&1
 }
 
-for name in "${classic[@]}" "${figures[@]}"; do
+all_scenes=("${classic[@]}" "${figures[@]}")
+[ "${PER_PIXEL_ONLY:-}" = creases ] && all_scenes=()
+for name in "${all_scenes[@]}"; do
   echo "== $name"
   # Both samplers up to 256 spp; Sobol, the default, on to 1024 where the exact reference
   # can judge its bias.
@@ -103,8 +126,32 @@ for name in "${classic[@]}" "${figures[@]}"; do
   fi
 done
 
+# Marched solids where they meet other surfaces: each against exact intersection where it
+# has one, else against the converged march; the converged march judged in turn.
+for entry in difference-on-floor:exact intersection-on-floor:exact \
+             smooth-union-in-room:converged user-sdf-against-wall:converged; do
+  name="${entry%%:*}" reference="${entry#*:}"
+  echo "== $name"
+  for seed in 1 2; do
+    for n in "${ladder[@]}"; do [ "$n" -gt "$crease_spp" ] || render "$name" sobol "$seed" "$n"; done
+    if [ -n "${PER_PIXEL_BASELINE:-}" ]; then
+      RENDER_PROGRAM="$PER_PIXEL_BASELINE" render "$name" before "$seed" "$crease_spp"
+    fi
+  done
+  for seed in 11 12; do
+    render "$name" converged "$seed" "$crease_spp" "${converged[@]}"
+    if [ "$reference" = exact ]; then
+      render "$name" exact "$seed" "$crease_spp" --exact-geometry
+    else
+      render "$name" halved "$seed" "$crease_spp" "${halved[@]}"
+    fi
+  done
+done
+
 # The flat lit plane at 1 and 4 spp, each sampler, and a 1024-spp render to subtract.
-for sampler in sobol independent; do
+flat_samplers=(sobol independent)
+[ "${PER_PIXEL_ONLY:-}" = creases ] && flat_samplers=()
+for sampler in "${flat_samplers[@]}"; do
   for spp in 1 4; do
     out="$cache/flat-plane-$sampler-$spp.exr"
     [ -f "$out" ] && [ -z "${PER_PIXEL_REFRESH:-}" ] && continue
@@ -113,7 +160,7 @@ for sampler in sobol independent; do
   done
 done
 reference="$cache/flat-plane-reference.exr"
-if [ ! -f "$reference" ] || [ -n "${PER_PIXEL_REFRESH:-}" ]; then
+if [ "${PER_PIXEL_ONLY:-}" != creases ] && { [ ! -f "$reference" ] || [ -n "${PER_PIXEL_REFRESH:-}" ]; }; then
   "$program" "$root/bench/scenes/flat-lit-plane.in" 320 240 --spp 1024 --quiet --headless \
     --sampler independent --seed 99 --output "$reference"
 fi
@@ -121,4 +168,6 @@ rm -f "$cache/probe.exr"
 
 /usr/bin/python3 "$root/tools/per_pixel_report.py" "$cache" "$root/docs/ACCURACY.md" \
   "$root/docs/accuracy/per-pixel" --size "${size[@]}" --exact-spp "$exact_spp" \
-  --settings-spp "$settings_spp" --command "tools/per-pixel-report.sh"
+  --settings-spp "$settings_spp" --crease-spp "$crease_spp" \
+  --command "tools/per-pixel-report.sh" \
+  ${PER_PIXEL_ONLY:+--only-creases}

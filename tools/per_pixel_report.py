@@ -35,6 +35,8 @@ import numpy as np  # noqa: E402
 
 BEGIN = "<!-- per-pixel:begin -->"
 END = "<!-- per-pixel:end -->"
+CREASES_BEGIN = "<!-- per-pixel-creases:begin -->"
+CREASES_END = "<!-- per-pixel-creases:end -->"
 LADDER = [4, 16, 64, 256, 1024]
 # A bias estimate under this many of its standard errors is reported as within noise.
 BIAS_SIGMAS = 2.0
@@ -210,12 +212,12 @@ def table(header, rows):
     return "\n".join(lines)
 
 
-def signed_error_image(scene, difference, reference_mean, path):
+def signed_error_image(scene, difference, reference_mean, path, reference="exact"):
     luminance = difference @ np.array([0.2126, 0.7152, 0.0722]) / reference_mean
     figure, axes = plt.subplots(figsize=(4.2, 2.9), dpi=100)
     shown = axes.imshow(luminance, cmap="RdBu_r", vmin=-ERROR_IMAGE_SPAN, vmax=ERROR_IMAGE_SPAN,
                         interpolation="nearest")
-    axes.set_title(f"{scene}: default - exact", fontsize=9)
+    axes.set_title(f"{scene}: default - {reference}", fontsize=9)
     axes.axis("off")
     bar = figure.colorbar(shown, ax=axes, fraction=0.046, pad=0.03)
     bar.set_label("luminance / image mean", fontsize=8)
@@ -278,10 +280,11 @@ def exact_section(cache, scenes, image_dir, link_dir, args):
         "",
         f"The reference is the program itself with `--exact-geometry`: spheres, polyhedra, "
         f"boxes, capped cylinders, disks, cones, tori no thinner than 1:10 and user SDFs that "
-        f"declare an `@intersect` function met in closed form, with the same light transport, "
-        f"so that the difference is the sphere tracer's geometry alone. Scenes with a CSG "
-        f"block, a rounded box, a thinner torus or another user SDF have no such reference and "
-        f"are left out. Each scene is "
+        f"declare an `@intersect` function met in closed form, and sharp CSG blocks of these "
+        f"met by walking their leaves' crossings, with the same light transport, "
+        f"so that the difference is the sphere tracer's geometry alone. Scenes with a smoothed "
+        f"CSG block, a rounded box, a thinner torus or another user SDF have no such reference "
+        f"and are left out. Each scene is "
         f"rendered at {args.size[0]}x{args.size[1]}: by default with seeds 1 and 2 up to "
         f"{LADDER[-1]} spp, and exactly with seeds 11 and 12 at {args.exact_spp} spp each.",
         "",
@@ -325,6 +328,118 @@ def exact_section(cache, scenes, image_dir, link_dir, args):
                    "bias / noise", "time"], setting_rows),
             "",
         ]
+    return lines
+
+
+def bias_between(a, b):
+    """Squared relative bias of renders a = (a1, a2) against renders b = (b1, b2) of other
+    seeds (a1 may share b1's seed: their common noise then cancels in a1 - b1), and its
+    standard error: the mean of the product of the two seeds' differences."""
+    mean = 0.5 * (b[0].rgb + b[1].rgb).mean()
+    products = ((a[0].rgb - b[0].rgb) * (a[1].rgb - b[1].rgb)).ravel() / mean ** 2
+    return products.mean(), products.std() / math.sqrt(products.size)
+
+
+def creases_section(cache, image_dir, link_dir, args):
+    """Marched solids where they meet other surfaces (issue 36): bench/scenes/creases/."""
+    spp = args.crease_spp
+    names = sorted(n for n in cache.scenes() if cache.has(n, "converged", 11, spp))
+    if not names:
+        return []
+    rows, checks, images = [], [], []
+    for scene in names:
+        ladder = cache.ladder(scene, "sobol")
+        top = ladder[-1]
+        kind = "exact" if cache.has(scene, "exact", 11, spp) else "converged"
+        r1, r2 = (cache.get(scene, kind, s, spp) for s in (11, 12))
+        reference = 0.5 * (r1.rgb + r2.rgb)
+        mean = reference.mean()
+        reference_noise = np.mean((r1.rgb - r2.rgb) ** 2) / 4.0 / mean ** 2
+        a1, a2 = cache.get(scene, "sobol", 1, top), cache.get(scene, "sobol", 2, top)
+        bias_mse, stderr = bias_between((a1, a2), (r1, r2))
+        noise_mse = noise_relative_mse(a1, a2)
+        error_mse = np.mean((a1.rgb - reference) ** 2) / mean ** 2
+        explained = math.sqrt(error_mse / (noise_mse + reference_noise))
+        average = 0.5 * (a1.rgb + a2.rgb)
+        worst_error = worst_share(((average - reference) ** 2).sum(axis=2))
+        worst_noise = worst_share(((a1.rgb - a2.rgb) ** 2).sum(axis=2))
+        noise_curve = [noise_relative_mse(cache.get(scene, "sobol", 1, n),
+                                          cache.get(scene, "sobol", 2, n)) for n in ladder]
+        significant = bias_mse >= BIAS_SIGMAS * stderr
+        cross = crossover(ladder, noise_curve, bias_mse) if significant else None
+        # One render's noise at 4096 spp, from the noise at the ladder's top.
+        noise_4096 = math.sqrt(noise_mse * top / 4096.0)
+        bound = relative_rmse(bias_mse if significant else BIAS_SIGMAS * stderr)
+        image = f"{scene}-signed-error.png"
+        signed_error_image(scene, average - reference, mean, os.path.join(image_dir, image), kind)
+        images.append((scene, image))
+        before = ""
+        if cache.has(scene, "before", 1, spp) and cache.has(scene, "before", 2, spp):
+            b1, b2 = cache.get(scene, "before", 1, spp), cache.get(scene, "before", 2, spp)
+            before_bias, before_stderr = bias_between((b1, b2), (r1, r2))
+            before_error = np.mean((b1.rgb - reference) ** 2) / mean ** 2
+            before_worst = worst_share(((0.5 * (b1.rgb + b2.rgb) - reference) ** 2).sum(axis=2))
+            before = (f"{bias_text(before_bias, before_stderr)}; explained "
+                      f"{math.sqrt(before_error / (noise_relative_mse(b1, b2) + reference_noise)):.3g}"
+                      f"; worst 1 % {100 * before_worst:.0f} %")
+            image = f"{scene}-before-signed-error.png"
+            signed_error_image(scene + " (before)", 0.5 * (b1.rgb + b2.rgb) - reference, mean,
+                               os.path.join(image_dir, image), kind)
+        rows.append([scene, "exact intersection" if kind == "exact" else "converged march",
+                     bias_text(bias_mse, stderr), fmt(relative_rmse(noise_mse)),
+                     fmt(relative_rmse(error_mse)), fmt(explained, 3),
+                     f"{100 * worst_error:.0f} %", f"{100 * worst_noise:.0f} %",
+                     "never (no bias measured)" if cross is None else fmt(cross, 2),
+                     fmt(bound / noise_4096, 2), before or "n/a"])
+        converged = tuple(cache.get(scene, "converged", s, spp) for s in (11, 12))
+        judge = "exact" if kind == "exact" else "halved"
+        judged = tuple(cache.get(scene, judge, s, spp) for s in (11, 12))
+        check_bias, check_stderr = bias_between(converged, judged)
+        check_noise = noise_relative_mse(*converged)
+        checks.append([scene, "exact intersection" if judge == "exact" else
+                       "itself at half the tolerance", bias_text(check_bias, check_stderr),
+                       fmt(relative_rmse(check_noise)),
+                       fmt(relative_rmse(max(check_bias, BIAS_SIGMAS * check_stderr)) /
+                           math.sqrt(check_noise * spp / 4096.0), 2)])
+    lines = [
+        "## Per pixel, marched solids where they meet other surfaces",
+        "",
+        "Solids that every render marches, standing on a floor or against a wall "
+        "(`bench/scenes/creases/`): a CSG difference and a CSG intersection on a floor in the "
+        "open, a smooth union in a closed room, a user SDF against a wall. Where the solid is a "
+        "sharp CSG block of shapes with a closed form, the reference is `--exact-geometry`, "
+        "which walks the leaves' exact crossings (shadergen/ExactCsgIntersection.h); where it has "
+        "none (smooth unions, user SDFs), the reference is the **converged march**: the default "
+        "renderer at a sixteenth of the default hit tolerance (`--hit-tolerance 0.015625 "
+        "--max-steps 4096`). Default renders with seeds 1 and 2 up to "
+        f"{spp} spp, references with seeds 11 and 12 at {spp} spp each; columns as "
+        "above, and **bias / noise at 4096 spp**, the bias (or its bound, where within noise) "
+        "over one 4096-spp render's noise, which must stay under 1. **before** is the "
+        "renderer before issue 36 against the same reference, at "
+        f"{spp} spp.",
+        "",
+        table(["scene", "reference", "bias", f"noise, {spp} spp",
+               f"error, {spp} spp", "explained", "worst 1 %: error",
+               "worst 1 %: noise", "crossover spp", "bias / noise at 4096 spp", "before"],
+              rows),
+        "",
+        "The converged march, judged: against exact intersection where there is one, and "
+        "against itself at half its tolerance (`--hit-tolerance 0.0078125 --max-steps 8192`) "
+        f"where there is none, seeds 11 and 12 at {spp} spp each.",
+        "",
+        table(["scene", "converged march against", "bias", f"noise, {spp} spp",
+               "bias / noise at 4096 spp"], checks),
+        "",
+        f"Signed error of the default (mean of both seeds) against the reference, as above; "
+        f"where the renderer before issue 36 was rendered, its image follows.",
+        "",
+    ]
+    shown = []
+    for scene, image in images:
+        shown.append(f"![{scene}]({link_dir}/{image})")
+        if os.path.exists(os.path.join(image_dir, f"{scene}-before-signed-error.png")):
+            shown.append(f"![{scene}, before]({link_dir}/{scene}-before-signed-error.png)")
+    lines += [" ".join(shown), ""]
     return lines
 
 
@@ -518,24 +633,37 @@ def main():
     parser.add_argument("--size", nargs=2, type=int, default=[160, 120])
     parser.add_argument("--exact-spp", type=int, default=2048)
     parser.add_argument("--settings-spp", type=int, default=256)
+    parser.add_argument("--crease-spp", type=int, default=1024)
     parser.add_argument("--command", default="tools/per-pixel-report.sh")
+    parser.add_argument("--only-creases", action="store_true",
+                        help="write only the section on marched solids' creases")
     args = parser.parse_args()
     os.makedirs(args.image_dir, exist_ok=True)
     link_dir = os.path.relpath(args.image_dir, os.path.dirname(os.path.abspath(args.markdown)))
     cache = Cache(args.cache)
     scenes = [s for s in cache.scenes() if cache.ladder(s, "independent")]
-    lines = [BEGIN, ""]
-    lines += exact_section(cache, scenes, args.image_dir, link_dir, args)
-    lines += sampler_section(cache, scenes, args.image_dir, link_dir, args)
-    lines += [f"Regenerate these sections with `{args.command}`.", "", END]
-    section = "\n".join(lines)
     text = open(args.markdown).read() if os.path.exists(args.markdown) else ""
-    if BEGIN in text and END in text:
-        text = text[:text.index(BEGIN)] + section + text[text.index(END) + len(END):]
-    else:
-        text = text.rstrip("\n") + "\n\n" + section + "\n"
+    if not args.only_creases:
+        lines = [BEGIN, ""]
+        lines += exact_section(cache, scenes, args.image_dir, link_dir, args)
+        lines += sampler_section(cache, scenes, args.image_dir, link_dir, args)
+        lines += [f"Regenerate these sections with `{args.command}`.", "", END]
+        text = replace_block(text, BEGIN, END, "\n".join(lines))
+    lines = [CREASES_BEGIN, ""]
+    lines += creases_section(cache, args.image_dir, link_dir, args)
+    lines += [f"Regenerate this section with `PER_PIXEL_ONLY=creases {args.command}`.", "",
+              CREASES_END]
+    text = replace_block(text, CREASES_BEGIN, CREASES_END, "\n".join(lines))
     with open(args.markdown, "w") as file:
         file.write(text)
+
+
+def replace_block(text, begin, end, section):
+    """`text` with what lies between the markers `begin` and `end` replaced by `section`
+    (which holds them), or with `section` appended where they are missing."""
+    if begin in text and end in text:
+        return text[:text.index(begin)] + section + text[text.index(end) + len(end):]
+    return text.rstrip("\n") + "\n\n" + section + "\n"
 
 
 if __name__ == "__main__":

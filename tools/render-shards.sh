@@ -13,6 +13,9 @@
 #   --first-seed S      the first shard's seed (default 1)
 #   --threads N         rendering threads of each shard (Mesa llvmpipe's LP_NUM_THREADS;
 #                       default: llvmpipe's own, one per processor)
+#   --gpus N            the machine's N GPUs, one shard on each at a time: the shard in GNU
+#                       parallel's job slot J renders on GPU (J - 1) mod N (--gl-device,
+#                       through EGL; never on the processor). --jobs defaults to N
 #   --keep DIR          render the shards into DIR and keep them (default: a temporary folder
 #                       beside the output, removed once merged)
 #   --raytracer PATH    the program (default: $RAYTRACER, else build/raytracer here)
@@ -28,7 +31,7 @@ fail() { echo "render-shards: $*" >&2; exit "${2:-1}"; }
 [ $# -ge 5 ] || usage
 scene=$1 width=$2 height=$3 spp=$4 shards=$5
 shift 5
-output="" png="" jobs="" first_seed=1 threads="" keep="" raytracer="${RAYTRACER:-$root/build/raytracer}"
+output="" png="" jobs="" first_seed=1 threads="" gpus="" keep="" raytracer="${RAYTRACER:-$root/build/raytracer}"
 extra=()
 while [ $# -gt 0 ]; do
     case "$1" in
@@ -37,16 +40,18 @@ while [ $# -gt 0 ]; do
         --jobs) jobs=${2:?--jobs needs a number}; shift 2 ;;
         --first-seed) first_seed=${2:?--first-seed needs a number}; shift 2 ;;
         --threads) threads=${2:?--threads needs a number}; shift 2 ;;
+        --gpus) gpus=${2:?--gpus needs a number}; shift 2 ;;
         --keep) keep=${2:?--keep needs a folder}; shift 2 ;;
         --raytracer) raytracer=${2:?--raytracer needs a path}; shift 2 ;;
         --) shift; extra=("$@"); break ;;
         *) fail "unknown option '$1' (see the head of $0)" 2 ;;
     esac
 done
-for number in "$width" "$height" "$spp" "$shards" "$first_seed" ${jobs:+"$jobs"} ${threads:+"$threads"}; do
+for number in "$width" "$height" "$spp" "$shards" "$first_seed" ${jobs:+"$jobs"} ${threads:+"$threads"} ${gpus:+"$gpus"}; do
     [[ "$number" =~ ^[0-9]+$ ]] || fail "'$number' is not a whole number" 2
 done
 [ "$shards" -ge 1 ] || fail "SHARDS must be at least 1" 2
+[ -z "$gpus" ] || [ "$gpus" -ge 1 ] || fail "--gpus must be at least 1" 2
 [ "$spp" -ge "$shards" ] || fail "SPP ($spp) must be at least SHARDS ($shards): every shard renders a sample" 2
 
 if ! command -v parallel >/dev/null 2>&1 || ! parallel --version 2>/dev/null | grep -q "GNU parallel"; then
@@ -63,7 +68,12 @@ if [ -n "$keep" ]; then
 else
     shard_dir=$(mktemp -d "$(dirname "$output")/.$name-shards.XXXXXX")
 fi
-jobs=${jobs:-$shards}
+jobs=${jobs:-${gpus:-$shards}}
+# Where the shards render: headless as the program chooses (EGL on a GPU, else the CPU), or
+# with --gpus each running shard on a GPU of its own: GNU parallel numbers the job slots from
+# 1, and a slot runs one job at a time, so the jobs running at once hold different GPUs.
+device=(--headless)
+[ -n "$gpus" ] && device=(--gl-device "{=1 \$_ = (slot() - 1) % $gpus =}")
 
 seeds=() counts=() files=()
 for ((k = 0; k < shards; ++k)); do
@@ -76,14 +86,14 @@ export_threads=()
 [ -n "$threads" ] && export_threads=(env "LP_NUM_THREADS=$threads")
 
 echo "render-shards: $scene at ${width}x$height, $spp samples per pixel in $shards shards" \
-     "(seeds ${seeds[0]} to ${seeds[-1]}), $jobs at a time, into $shard_dir"
+     "(seeds ${seeds[0]} to ${seeds[-1]}), $jobs at a time${gpus:+ on $gpus GPUs}, into $shard_dir"
 start=$(date +%s.%N)
 # One job per (seed, samples) pair (--link); -q passes every argument as it is; a failure
 # stops the rest at once. Each shard's summary line comes out tagged with its seed.
 if ! parallel --will-cite --halt now,fail=1 --jobs "$jobs" --link -q --line-buffer \
         --tagstring "shard {1}:" \
         "${export_threads[@]}" "$raytracer" "$scene" "$width" "$height" --spp "{2}" --seed "{1}" \
-        --headless --quiet --output "$shard_dir/shard-{1}.exr" "${extra[@]}" \
+        "${device[@]}" --quiet --output "$shard_dir/shard-{1}.exr" "${extra[@]}" \
         ::: "${seeds[@]}" ::: "${counts[@]}"; then
     fail "a shard failed or was interrupted: nothing merged; the shards are in $shard_dir"
 fi

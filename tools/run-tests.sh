@@ -25,6 +25,6 @@ if [ "${RAYTRACER_SKIP_SANITIZER:-0}" != 1 ]; then
     cd "$root"
     cmake --preset sanitize >/dev/null
     cmake --build build-sanitize --parallel --target scene_tests io_tests shadergen_tests \
-        film_tests interaction_tests scene_fuzz_replay
+        film_tests interaction_tests scene_fuzz_replay render_file_fuzz_replay
     ctest --preset sanitize
 fi

@@ -73,7 +73,7 @@ std::string referenceKey(const scene::Scene& parsed, const settings::RenderSetti
     Fnv1a64 hash;
     hash.add("bench_convergence reference 2");
     hash.add(fileBytes(parsed.sourcePath));
-    hash.add(prepared.fragmentSource.text());
+    hash.add(prepared.pathTracerSource.text());
     hash.addVector(code.shapeParameters);
     hash.addVector(uniforms.objects);
     hash.addVector(uniforms.pigments);

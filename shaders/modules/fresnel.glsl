@@ -47,3 +47,30 @@ float dielectricReflectance(float cosIncident, float etaIncident, float etaTrans
     float cosThinnerSide = etaIncident <= etaTransmitted ? cosIncident : cosTransmitted;
     return schlickFresnel(r0, cosThinnerSide);
 }
+
+#if HAS_ROUGH_CONDUCTOR
+// Reflectance of a smooth conductor of complex index eta + i k (relative to the outside),
+// per channel, for unpolarised light arriving at cosine cosIncident (> 0): the mean of the
+// s- and p-polarised reflectances of the Fresnel equations for an absorbing medium (Born
+// and Wolf, "Principles of Optics", section 14.2; in this form PBRT 3e, section 8.2.1),
+//   Rs = (a^2 + b^2 - 2 a cos + cos^2) / (a^2 + b^2 + 2 a cos + cos^2),
+//   Rp = Rs (cos^2 (a^2 + b^2) - 2 a cos sin^2 + sin^4) / (cos^2 (a^2 + b^2) + 2 a cos sin^2 + sin^4),
+// with a^2 + b^2 = sqrt((eta^2 - k^2 - sin^2)^2 + 4 eta^2 k^2) and
+// a = sqrt((a^2 + b^2 + eta^2 - k^2 - sin^2) / 2).
+vec3 conductorReflectance(float cosIncident, vec3 eta, vec3 k)
+{
+    float cos2 = clamp(cosIncident * cosIncident, 0.0, 1.0);
+    float sin2 = 1.0 - cos2;
+    vec3 eta2 = eta * eta;
+    vec3 k2 = k * k;
+    vec3 t0 = eta2 - k2 - sin2;
+    vec3 a2PlusB2 = sqrt(t0 * t0 + 4.0 * eta2 * k2);
+    vec3 a = sqrt(max(0.5 * (a2PlusB2 + t0), 0.0));
+    vec3 twoACos = 2.0 * a * sqrt(cos2);
+    vec3 rs = (a2PlusB2 + cos2 - twoACos) / (a2PlusB2 + cos2 + twoACos);
+    vec3 t3 = cos2 * a2PlusB2 + sin2 * sin2;
+    vec3 t4 = twoACos * sin2;
+    vec3 rp = rs * (t3 - t4) / (t3 + t4);
+    return 0.5 * (rs + rp);
+}
+#endif

@@ -26,6 +26,14 @@ Surface surfaceAt(int object, vec3 p, vec3 normal, vec3 wo, float insideSign, fl
     s.material = finishMaterial(finish);
     s.ior = finishIor(finish);
     s.lightIndex = objectSphereLight(object);
+#if HAS_MICROFACET
+    s.roughness = finishRoughness(finish);
+#endif
+#if HAS_ROUGH_CONDUCTOR
+    s.complexIor = finishHasComplexIor(finish);
+    s.conductorEta = finishConductorEta(finish);
+    s.conductorK = finishConductorK(finish);
+#endif
     return s;
 }
 
@@ -42,6 +50,8 @@ struct PathState {
     vec3 throughput;
     float radianceScale;  // product of the refractions' (eta_o / eta_i)^2
     vec3 radiance;
+    // The last scattering could not have been found by light sampling (a delta, or a ray
+    // through the surface): the emission this ray meets counts in full, without MIS.
     bool previousWasDelta;
     float previousPdf;
     vec3 previousPosition;
@@ -60,8 +70,7 @@ int maxSegmentsPerPath()
 PathState startPath(vec2 filmPoint, int cameraContaining, float cameraClear)
 {
     PathState path;
-    path.origin = gCameraEye;
-    path.direction = cameraRayDirection(filmPoint);
+    cameraRay(filmPoint, path.origin, path.direction);
     path.cone = RayCone(0.0, cameraPixelSpread());
     path.containing = cameraContaining;
     path.insideSign = cameraContaining >= 0 ? -1.0 : 1.0;
@@ -151,6 +160,13 @@ bool continuePath(inout PathState path)
     path.throughput *= scattered.weight;
     path.radianceScale *= scattered.radianceScale;
     path.previousWasDelta = scattered.isDelta;
+#if HAS_ROUGH_DIELECTRIC
+    // Light sampling looks only on the side of the surface the path arrived from
+    // (directLighting): a direction through the surface has no light-sampling counterpart,
+    // so the light it finds counts in full.
+    if (dot(scattered.direction, s.facingNormal) < 0.0)
+        path.previousWasDelta = true;
+#endif
     path.previousPdf = scattered.pdf;
     // Light sampling measured its cone from the surface point; MIS weighs the same pdfs.
     path.previousPosition = p;

@@ -1,8 +1,10 @@
-// One frame of progressive rendering: each pixel reads its running estimate from the
-// previous frame's targets, traces its paths, and writes the estimate anew (the two target
-// sets are ping-ponged by the host; no texture is read and written in one draw). A path's
-// numbers depend only on (seed, pixel, sample index) (sampler.glsl), so nothing else needs
-// to persist between frames.
+// What one pixel does in one frame, whichever kernel drives it (fragment_kernel.glsl: one
+// fragment per pixel of a full-screen triangle; compute_kernel.glsl: one invocation per
+// pixel of a compute dispatch): it takes its running estimate from the previous frame's
+// targets, traces its paths, and the kernel writes the estimate anew (the two target sets are
+// ping-ponged by the host; no texture is read and written in one pass). A path's numbers
+// depend only on (seed, pixel, sample index) (sampler.glsl), so nothing else needs to
+// persist between frames, and both kernels give a pixel the same samples.
 //
 // The estimate is a running mean, mean += (x - mean) / n, not a running sum: a sum in
 // float32 loses the low digits of each new sample once it is large, the mean does not, so
@@ -19,24 +21,21 @@ uniform int uSampleTarget;  // samples (kept and discarded) a pixel stops at; 0:
 uniform sampler2D uTileSampleTargets;
 uniform int uTileSize;
 
-layout(location = 0) out vec4 outEstimate;
-layout(location = 1) out vec4 outMoments;
-
 bool isValidSample(vec3 value)
 {
     return !any(isnan(value)) && !any(isinf(value)) && all(greaterThanEqual(value, vec3(0.0)));
 }
 
-void main()
+// The pixel's estimate and moments as the previous frame left them.
+void readPreviousAccumulation(ivec2 pixel, out vec4 estimate, out vec4 moments)
 {
-    // Before any branch: the uniforms are read once (shadergen/UniformBlock.h says why).
-    readUniformsOnce();
-    ivec2 pixel = ivec2(gl_FragCoord.xy);
-    vec4 estimate = texelFetch(uPreviousEstimate, pixel, 0);
-    vec4 moments = texelFetch(uPreviousMoments, pixel, 0);
-    outEstimate = estimate;
-    outMoments = moments;
+    estimate = texelFetch(uPreviousEstimate, pixel, 0);
+    moments = texelFetch(uPreviousMoments, pixel, 0);
+}
 
+// Adds this frame's paths of `pixel` to its estimate and moments.
+void accumulatePaths(ivec2 pixel, inout vec4 estimate, inout vec4 moments)
+{
     // uSamplesPerFrame paths, or fewer where the pixel would pass uSampleTarget (0: none),
     // one after the other, in one loop of path segments: a pixel whose path ends early
     // starts its next path at once instead of idling until its neighbours' longer paths
@@ -95,6 +94,4 @@ void main()
         beginSample(pixel, uint(estimate.a + moments.a));
         path = startPath(vec2(pixel) + sample2D(SAMPLE_PIXEL), cameraContaining, cameraClear);
     }
-    outEstimate = estimate;
-    outMoments = moments;
 }

@@ -198,32 +198,51 @@ SurfaceHit findSurface(vec3 origin, vec3 direction, float insideSign, RayCone co
 // `facingNormal` points to the side the ray arrived from (Surface.facingNormal, which the
 // BSDFs sampled against): a direction on that side stays in the region the ray travelled
 // in, one on the other side crosses into the other region. The offset point can land
-// beyond another surface, in a solid the ray never entered: near an edge or a corner (an
-// offset from a room's wall, out through the next wall, would then see the sky), or along a
-// grazing direction inside a concave surface. Then the offset is retried along the normal,
-// once, and twice as far; failing that the path ends there.
+// beyond another surface, in a solid the ray never entered: in the crease where a solid
+// stands on a floor or touches a wall, near an edge or a corner of a room, or along a
+// grazing direction inside a concave surface. Then the offset is taken again, shorter
+// (kOffsetShrinks times, by kOffsetShrink each): in an acute crease (a ball or a rounded
+// solid resting on the floor) the gap narrows below two tolerances over most of a pixel,
+// and every path from there used to end or start on the wrong side: the crease's line came
+// out 14 % too dark (tests/render/EdgeBiasTest.cpp). A ray that starts nearer its surface
+// than the tolerance stops at once and is marched on as a near miss (findSurface). Failing
+// all of those the offset is retried along the normal, once, and twice as far; failing
+// that the path ends there.
 // `containing` receives the object the new ray starts inside (-1 outside every object);
 // its march starts at its origin.
 const float kMinimumSpawnCosine = 0.0625;
 const int kMaxShadowCrossings = 32;
+const int kOffsetShrinks = 3;
+const float kOffsetShrink = 0.25;
+
+// The point `clearance` off the surface at p (normal n, towards the side the ray leaves
+// to) along unit `direction`, whose cosine with n is `cosLeaving` (>= 0): along the
+// direction, but for grazing directions partly along the normal. `along` receives how far
+// along the direction it lies.
+vec3 offsetAlongRay(vec3 p, vec3 n, vec3 direction, float cosLeaving, float clearance,
+                    out float along)
+{
+    along = clearance / max(cosLeaving, kMinimumSpawnCosine);
+    float normalPart = max(0.0, clearance - along * cosLeaving);
+    return p + direction * along + n * normalPart;
+}
 
 bool spawn(vec3 p, vec3 facingNormal, vec3 direction, float tolerance, int object,
            inout float insideSign, out vec3 origin, out float start, out int containing)
 {
     start = 0.0;
-    const float kMinimumCosine = kMinimumSpawnCosine;
     float cosLeaving = dot(direction, facingNormal);
     bool crosses = cosLeaving < 0.0;
-    float side = crosses ? -1.0 : 1.0;
+    vec3 leaving = crosses ? -facingNormal : facingNormal;
     float expectedSign = crosses ? -insideSign : insideSign;
     float clearance = 2.0 * tolerance;
-    float along = clearance / max(abs(cosLeaving), kMinimumCosine);
-    float normalPart = max(0.0, clearance - along * abs(cosLeaving));
-    for (int attempt = 0; attempt < 3; ++attempt) {
-        if (attempt == 0)
-            origin = p + direction * along + facingNormal * (side * normalPart);
+    float along;
+    for (int attempt = 0; attempt <= kOffsetShrinks + 2; ++attempt) {
+        if (attempt <= kOffsetShrinks)
+            origin = offsetAlongRay(p, leaving, direction, abs(cosLeaving),
+                                    clearance * pow(kOffsetShrink, float(attempt)), along);
         else
-            origin = p + facingNormal * (side * float(attempt) * clearance);
+            origin = p + leaving * (float(attempt - kOffsetShrinks) * clearance);
         COUNT_WORK(workEvaluations, 1);
         if (expectedSign * sceneDistanceAndObject(origin, containing) > 0.0) {
             insideSign = expectedSign;
@@ -235,24 +254,54 @@ bool spawn(vec3 p, vec3 facingNormal, vec3 direction, float tolerance, int objec
     return false;
 }
 
-// Shapes met exactly, which marches leave out, block the segment where it crosses one;
-// index-1 ones only tint `transmittance`, and are passed one crossing after another. True
-// when one blocks.
-bool exactShapesBlock(vec3 origin, vec3 wi, float maxDistance, float tolerance, int target,
-                      inout vec3 transmittance)
+// Where a shadow segment starts: `clearance` off the surface along wi, as spawn offsets rays
+// (offsetAlongRay: the segment's line still passes through the shading point, so what it
+// sees of the light is what the point sees; an offset along the normal raises the point, and
+// shadows near contacts and edges shift by it), `along` of it along wi. Where the offset
+// carries the origin into a solid (the crease where a solid stands on a floor, a room's
+// corner), the segment starts nearer the surface, as spawn's rays do (shrinkShadowStart); it
+// would otherwise count as blocked.
+struct ShadowStart {
+    vec3 origin;
+    float along;
+    float clearance;
+    int shrinks;
+};
+
+// `start` taken again kOffsetShrink times nearer the surface at s; false (and `start` as it
+// was) once it has been kOffsetShrinks times.
+bool shrinkShadowStart(inout ShadowStart start, Surface s, vec3 wi, float cosLeaving)
+{
+    if (start.shrinks >= kOffsetShrinks)
+        return false;
+    ++start.shrinks;
+    start.clearance *= kOffsetShrink;
+    start.origin =
+        offsetAlongRay(s.position, s.facingNormal, wi, cosLeaving, start.clearance, start.along);
+    return true;
+}
+
+// Shapes met exactly, which marches leave out, block the segment (to `distance` from s) where
+// it crosses one; index-1 ones only tint `transmittance`, and are passed one crossing after
+// another. A solid met exactly that the segment leaves before anything else holds its start:
+// the start is taken nearer the surface. True when a shape blocks.
+bool exactShapesBlock(Surface s, vec3 wi, float cosLeaving, float distance, float tolerance,
+                      int target, inout ShadowStart start, inout vec3 transmittance)
 {
     float from = 0.0;
     for (int crossing = 0; crossing < kMaxShadowCrossings && loopIterationAllowed();
          ++crossing) {
-        ExactHit wall = ExactHit(maxDistance, -1, vec3(0.0));
-        exactSurfacesIntersect(origin, wi, from, -1, wall);
+        ExactHit wall = ExactHit(distance - start.along, -1, vec3(0.0));
+        exactSurfacesIntersect(start.origin, wi, from, -1, wall);
         if (wall.object < 0 || wall.object == target)
             break;
+        if (from == 0.0 && dot(wall.normal, wi) > 0.0 && shrinkShadowStart(start, s, wi, cosLeaving))
+            continue;
         if (!isNullInterface(wall.object))
             return true;
 #if HAS_NULL_INTERFACES
-        transmittance *= pigmentColor(objectPigment(wall.object), origin + wall.t * wi, -wi,
-                                      0.0, 0.0, random01());
+        transmittance *= pigmentColor(objectPigment(wall.object), start.origin + wall.t * wi,
+                                      -wi, 0.0, 0.0, random01());
         from = wall.t + tolerance;
 #endif
     }
@@ -276,34 +325,45 @@ bool excludedSphereLightsBlock(vec3 origin, vec3 wi, float maxDistance, int targ
 const int kMaxShadowStops = kNearMissRetries + kMaxShadowCrossings + 1;
 
 #if HAS_MARCHED_OBJECTS
-// The segment marched to its clear end (see shadowTransmittance). The march runs in two
-// nested loops: the inner one (shadowMarch, sphere_tracing.glsl) only steps, one distance
-// each, until the ray escapes or stops near a surface; this one judges the stop (the light
-// reached, an index-1 surface passed, a near miss marched on, or a blocker) and goes round
-// again only while some ray of the SIMD group marches on. llvmpipe executes a branch for
-// the whole group whenever one lane takes it, so a judgement inside the step loop would be
-// paid at nearly every step.
-vec3 marchedTransmittance(vec3 origin, vec3 wi, float insideSign, uint mask,
-                          float clearDistance, float tolerance, int target, vec3 transmittance)
+// The segment marched to its clear end (see shadowTransmittance); `culling` was measured
+// from `culledFrom` along wi. The march runs in two nested loops: the inner one (shadowMarch,
+// sphere_tracing.glsl) only steps, one distance each, until the ray escapes or stops near a
+// surface; this one judges the stop (the light reached, an index-1 surface passed, a near
+// miss marched on, a start inside a marched solid, or a blocker) and goes round again only
+// while some ray of the SIMD group marches on. llvmpipe executes a branch for the whole group
+// whenever one lane takes it, so a judgement inside the step loop would be paid at nearly
+// every step.
+vec3 marchedTransmittance(Surface s, vec3 wi, float cosLeaving, float distance,
+                          float insideSign, RayCulling culling, float culledFrom,
+                          float tolerance, int target, ShadowStart start, vec3 transmittance)
 {
-    float stopTolerance = tolerance;
+    float clearDistance = min(distance - start.along, culling.escapeDistance);
+    // A segment that starts nearer its surface than the tolerance would stop there at once.
+    float stopTolerance = min(tolerance, 0.5 * start.clearance);
     int retries = 0;
     int stepsLeft = gMaxMarchSteps;
     float t = 0.0;
     float acceptedT = 0.0;
     float acceptedRadius = 0.0;
     for (int stop = 0; stop < kMaxShadowStops && loopIterationAllowed(); ++stop) {
-        float radius = shadowMarch(origin, wi, insideSign, mask, clearDistance, stopTolerance,
-                                   t, acceptedT, acceptedRadius, stepsLeft);
+        float radius = shadowMarch(start.origin, wi, insideSign, culling.mask, clearDistance,
+                                   stopTolerance, t, acceptedT, acceptedRadius, stepsLeft);
         if (t >= clearDistance)
             return transmittance;
         if (!(radius < stopTolerance))
             return vec3(0.0);  // the step budget is spent
+        // The origin is inside a marched solid: the offset fell into a crease.
+        if (t == 0.0 && radius < 0.0 && shrinkShadowStart(start, s, wi, cosLeaving)) {
+            clearDistance = min(distance - start.along,
+                                culling.escapeDistance + culledFrom - start.along);
+            stopTolerance = min(stopTolerance, 0.5 * start.clearance);
+            continue;
+        }
         --stepsLeft;
-        vec3 p = origin + t * wi;
+        vec3 p = start.origin + t * wi;
 #if HAS_NULL_INTERFACES || HAS_SPHERE_LIGHTS
         int nearest;
-        sceneDistanceAndObjectCulled(p, mask, nearest);
+        sceneDistanceAndObjectCulled(p, culling.mask, nearest);
         if (nearest == target)
             return transmittance;
 #endif
@@ -314,7 +374,7 @@ vec3 marchedTransmittance(vec3 origin, vec3 wi, float insideSign, uint mask,
             // Step through the surface; where the step only grazed it, the march goes on
             // from outside and crosses further along.
             t += 2.0 * tolerance;
-            insideSign = sceneDistance(origin + t * wi) < 0.0 ? -1.0 : 1.0;
+            insideSign = sceneDistance(start.origin + t * wi) < 0.0 ? -1.0 : 1.0;
             acceptedRadius = 0.0;
             continue;
         }
@@ -324,7 +384,7 @@ vec3 marchedTransmittance(vec3 origin, vec3 wi, float insideSign, uint mask,
         vec3 q = p;
         if (radius <= 0.0 || retries == kNearMissRetries ||
             intersectAlongRay(q, wi, insideSign * radius, insideSign, approach, stopTolerance,
-                              mask))
+                              culling.mask))
             return vec3(0.0);
         // A near miss: march on past it with a smaller tolerance.
         ++retries;
@@ -338,48 +398,44 @@ vec3 marchedTransmittance(vec3 origin, vec3 wi, float insideSign, uint mask,
 #endif
 
 // The light's transmittance along a shadow segment from s to `distance` along wi. It leaves
-// from off the surface, on the side the path arrived from, and marches to the far end.
-// Sphere lights that rays leave out of their marches block the segment where it crosses them
-// exactly; when the segment ends on a light that is still marched, arriving within the
-// tolerance of it counts as reaching it. (Marching on to the target's surface itself would
-// crawl for ever on rays that meet it at grazing angles, and be taken for occlusion.) A stop
-// near another surface blocks the light only if the ray truly meets it, as findSurface
-// decides for its hits: a shadow ray grazing a silhouette or slipping past the rim of a
-// contact within the tolerance goes on, with a smaller one. A spent step budget counts as
-// blocked, as a spent budget counts as a hit for camera and path rays.
+// from off the surface, on the side the path arrived from (ShadowStart), and marches to the
+// far end. Sphere lights that rays leave out of their marches block the segment where it
+// crosses them exactly; when the segment ends on a light that is still marched, arriving
+// within the tolerance of it counts as reaching it. (Marching on to the target's surface
+// itself would crawl for ever on rays that meet it at grazing angles, and be taken for
+// occlusion.) A stop near another surface blocks the light only if the ray truly meets it,
+// as findSurface decides for its hits: a shadow ray grazing a silhouette or slipping past
+// the rim of a contact within the tolerance goes on, with a smaller one. A spent step budget
+// counts as blocked, as a spent budget counts as a hit for camera and path rays.
 vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, float tolerance,
                          int target)
 {
-    // Off the surface along wi, as spawn offsets rays: the segment's line still passes
-    // through the shading point, so what it sees of the light is what the point sees (an
-    // offset along the normal raises the point, and shadows near contacts and edges shift
-    // by it). Only at grazing directions is part of the offset along the normal.
     COUNT_WORK(workShadowRays, 1);
-    float clearance = 2.0 * tolerance;
     float cosLeaving = dot(wi, s.facingNormal);
-    float along = clearance / max(cosLeaving, kMinimumSpawnCosine);
-    float normalPart = max(0.0, clearance - along * cosLeaving);
-    if (target < 0 && distance <= along)
+    ShadowStart start;
+    start.clearance = 2.0 * tolerance;
+    start.shrinks = 0;
+    start.origin =
+        offsetAlongRay(s.position, s.facingNormal, wi, cosLeaving, start.clearance, start.along);
+    if (target < 0 && distance <= start.along)
         return vec3(0.0);
-    vec3 origin = s.position + wi * along + s.facingNormal * normalPart;
-    float maxDistance = distance - along;
     vec3 transmittance = vec3(1.0);
-    RayCulling culling = sceneRayCulling(origin, wi, tolerance, 0.0);
-    if (exactShapesBlock(origin, wi, maxDistance, tolerance, target, transmittance))
+    if (exactShapesBlock(s, wi, cosLeaving, distance, tolerance, target, start, transmittance))
         return vec3(0.0);
+    RayCulling culling = sceneRayCulling(start.origin, wi, tolerance, 0.0);
+    float culledFrom = start.along;  // where along wi from the surface it was measured
 #if HAS_SPHERE_LIGHTS
     if (insideSign > 0.0) {
         culling.mask &= ~gSphereLightPieces;
-        if (excludedSphereLightsBlock(origin, wi, maxDistance, target))
+        if (excludedSphereLightsBlock(start.origin, wi, distance - start.along, target))
             return vec3(0.0);
     }
 #endif
 #if !HAS_MARCHED_OBJECTS
     return transmittance;
 #else
-    return marchedTransmittance(origin, wi, insideSign, culling.mask,
-                                min(maxDistance, culling.escapeDistance), tolerance, target,
-                                transmittance);
+    return marchedTransmittance(s, wi, cosLeaving, distance, insideSign, culling, culledFrom,
+                                tolerance, target, start, transmittance);
 #endif
 }
 
@@ -397,6 +453,14 @@ float cameraMarchStart(ivec2 pixel)
     // subtends the largest angle at the centre of the image.
     float growth = (0.7072 + gHitTolerance) * cameraPixelSpread();
     float tolerance0 = gMinimumHitDistance;
+#if HAS_THIN_LENS
+    // Through a lens, rays leave within gLensRadius of the eye and turn from the pinhole's
+    // ray by at most gLensRadius / gFocusDistance (they meet it on the plane of focus, at
+    // least that far): a ray's point at distance t lies within gLensRadius + t times that
+    // angle of the pinhole's, so a cone that much wider holds every one.
+    tolerance0 += gLensRadius;
+    growth += gLensRadius / gFocusDistance;
+#endif
     RayCulling culling = sceneRayCulling(gCameraEye, axis, tolerance0, growth);
     float limit = min(gFarDistance, culling.escapeDistance);
     return coneClearance(gCameraEye, axis, tolerance0, growth, culling.mask, limit);

@@ -34,6 +34,9 @@ const int kDecisionsPerBounce = 6;
 // arrives after several diffuse bounces is smooth, and the stratification of one of many
 // dimensions buys little there (docs/ACCURACY.md measures where the gain stops).
 const int kStratifiedBounces = 4;
+// 2D: the point on a thin lens (camera.glsl). After every bounce's dimensions, so that
+// adding it moved none of theirs: a scene without a lens draws what it drew before.
+const int SAMPLE_LENS = 1 + kDecisionsPerBounce * kStratifiedBounces;
 
 uint samplePixelKey = 0u;
 uint sampleIndex = 0u;

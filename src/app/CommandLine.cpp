@@ -331,6 +331,17 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
     readArguments(argc, argv, 1, renderEntries(), line, positional);
     if (line.action == Action::Help || line.action == Action::Version)
         return line;
+    if (line.glDevice) {
+        if (line.gl == platform::ContextKind::OsMesa || line.gl == platform::ContextKind::Window)
+            throw UsageError(std::string("--gl-device picks a GPU through EGL: it does not go "
+                                         "with --gl ") +
+                             platform::contextKindName(line.gl));
+        line.gl = platform::ContextKind::Gpu;
+    }
+    if (line.gl == platform::ContextKind::Window && line.headless)
+        throw UsageError("--headless and --gl window contradict each other: give one");
+    if (line.gl == platform::ContextKind::Window && line.resume)
+        throw UsageError("--resume renders headless: it does not go with --gl window");
     readPositional(positional, line);
     if (line.resume && line.action == Action::Render && !line.isBatch())
         throw UsageError("--resume goes on to an end: give --spp N (samples per pixel in all), "
@@ -442,9 +453,10 @@ Renders SCENE (a .in scene file) by path tracing on the GPU, WIDTH x HEIGHT pixe
 (default 640 480). Without SECONDS or --spp a window shows the image converging until it
 is closed (Escape closes it; its panel, Tab, lists the keys and mouse actions). With
 SECONDS the render runs that long, then writes the tone-mapped image as SCENE-NAME.ppm in
-the current folder (or --output). Without a display, or with --headless, rendering uses
-OSMesa and opens no window. Each option may be given once, as --name VALUE or
---name=VALUE.
+the current folder (or --output). Without a display, or with --headless, rendering opens no
+window: it goes through EGL on a GPU, else EGL on Mesa's software device, else OSMesa (--gl
+says which; every summary line names the OpenGL renderer). Each option may be given once,
+as --name VALUE or --name=VALUE.
 
 EXR and PNG files describe themselves in their headers (samples, seeds, settings, the
 scene's SHA-256, the program); an EXR also holds each pixel's sample count and second

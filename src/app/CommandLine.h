@@ -1,5 +1,6 @@
 #pragma once
 #include "film/AdaptiveSampling.h"
+#include "platform/ContextFactory.h"
 #include "settings/OptionDescription.h"
 #include "settings/RenderSettings.h"
 
@@ -39,6 +40,11 @@ struct CommandLine {
     std::optional<std::filesystem::path> output;
     std::optional<std::filesystem::path> statisticsOutput;
     bool headless = false;
+    // --gl KIND: which OpenGL renders (auto: a window where there is a display and the render
+    // is not headless, else EGL, else OSMesa); --gl-device N: the Nth GPU EGL lists, and no
+    // other (it implies --gl gpu).
+    platform::ContextKind gl = platform::ContextKind::Automatic;
+    std::optional<int> glDevice;
     bool quiet = false;
     settings::RenderSettings settings;
     // WIDTH HEIGHT were given (a resumed render takes the file's otherwise).

@@ -2,6 +2,7 @@
 
 #include "app/RenderCommand.h"
 #include "io/ImageFile.h"
+#include "film/RenderFileChecks.h"
 #include "film/RenderMetadata.h"
 
 #include <algorithm>
@@ -58,6 +59,10 @@ int runInfo(const std::filesystem::path& path)
     if (!metadata)
         throw std::runtime_error(path.string() + " holds no metadata of this program (" +
                                  file.format + "; PPM, PFM, HDR, JPEG and TIFF files hold none)");
+    // What info says of the file is only what a render's file holds (merge and --resume refuse
+    // the same).
+    film::checkPixelValues(file, *metadata, path.string());
+    film::checkPixelDigest(file, path.string());
 
     std::string channels;
     for (const std::string& name : file.channelNames)
@@ -90,6 +95,13 @@ int runInfo(const std::filesystem::path& path)
             files += (files.empty() ? "" : ", ") + name;
         printLine("merged from", files);
     }
+    auto recorded = [](const std::string& value) {
+        return value.empty() ? std::string("not recorded (written before it was)") : value;
+    };
+    printLine("OpenGL context", recorded(metadata->glContext));
+    printLine("OpenGL renderer", recorded(metadata->glRenderer));
+    printLine("OpenGL version", recorded(metadata->glVersion));
+    printLine("kernel", recorded(metadata->kernel));
     printLine("program", film::describeProgram(*metadata));
     for (const settings::SettingRow* setting : film::imageSettings())
         printLine(setting->description.metadataLabel,

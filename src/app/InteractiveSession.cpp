@@ -354,7 +354,8 @@ void InteractiveSession::save()
     const SnapshotFiles files =
         snapshotFiles(line_.scene, renderer_.samplesPerPixel(), line_.output);
     try {
-        film::RenderMetadata metadata = describeRender(line_.scene, sceneSha256_, renderer_);
+        film::RenderMetadata metadata =
+            describeRender(line_.scene, sceneSha256_, renderer_, window_.identity());
         metadata.renderSeconds = secondsBetween(accumulationStart_, Clock::now());
         writeSnapshot(renderer_, files, metadata);
         setStatus("saved " + files.picture.string() + " and " + files.radiance.string(), false);

@@ -27,8 +27,8 @@ InterruptWatch::InterruptWatch()
     interruptRequested = 0;
     std::signal(SIGINT, onInterrupt);
     std::signal(SIGTERM, onInterrupt);
-    // A program started with these blocked (by its parent, inherited through exec) would
-    // never see them; one sent before now is delivered here, to the handler.
+    // Blocked by the launcher (or by a parent: a mask is inherited through exec), they would
+    // never arrive; one sent before now, pending, is delivered here, to the handler.
     sigset_t signals;
     sigemptyset(&signals);
     sigaddset(&signals, SIGINT);

@@ -19,9 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Counts are stored as 32-bit floats (on the GPU and in the file), exact up to 2^24.
-constexpr double kLargestExactCount = 16777216.0;
-
 void refuseOutputsInOneFile(const MergeRequest& request)
 {
     std::vector<std::pair<const char*, fs::path>> outputs = {{"OUT", request.output}};
@@ -66,7 +63,7 @@ void refuseInexactCounts(const film::Accumulation& merged)
 {
     for (int y = 0; y < merged.height(); ++y)
         for (int x = 0; x < merged.width(); ++x)
-            if (merged.samplesTaken(x, y) > kLargestExactCount)
+            if (merged.samplesTaken(x, y) > static_cast<double>(film::kLargestSampleCount))
                 throw std::runtime_error(
                     "cannot merge: a pixel would hold more than 16777216 samples, beyond what "
                     "the 32-bit float counts hold exactly");
@@ -83,10 +80,20 @@ film::RenderMetadata mergedMetadata(const std::vector<fs::path>& paths,
     std::vector<film::SampleRange> ranges;
     for (std::size_t i = 0; i < renders.size(); ++i) {
         const film::RenderMetadata& input = renders[i].metadata;
+        // Each input's count is at most kLargestSampleCount (RenderMetadata.h): the 64-bit sum
+        // cannot wrap before it is checked.
         merged.samplesPerPixel += input.samplesPerPixel;
+        if (merged.samplesPerPixel > film::kLargestSampleCount)
+            throw std::runtime_error(
+                "cannot merge: the inputs hold " + std::to_string(merged.samplesPerPixel) +
+                " samples per pixel from " + paths[0].string() + " to " + paths[i].string() +
+                ", more than the " + std::to_string(film::kLargestSampleCount) +
+                " a pixel can hold (its 32-bit float counts are exact up to there)");
         merged.renderSeconds += input.renderSeconds;
         ranges.insert(ranges.end(), input.sampleRanges.begin(), input.sampleRanges.end());
         merged.mergedFrom.push_back(paths[i].string());
+        if (i > 0)
+            film::addRenderingDevice(merged, input);
         if (!input.interrupted.empty())
             merged.interrupted += (merged.interrupted.empty() ? "" : "; ") + paths[i].string() +
                                   ": " + input.interrupted;
@@ -110,7 +117,7 @@ io::Image toneMappedPicture(const film::Accumulation& accumulation)
 
 }  // namespace
 
-int runMerge(const MergeRequest& request)
+int runMerge(const MergeRequest& request, const InterruptWatch& interrupt)
 {
     refuseOutputsInOneFile(request);
     std::vector<io::OutputRequest> outputs = {{request.output, io::OutputKind::Image}};
@@ -119,6 +126,10 @@ int runMerge(const MergeRequest& request)
     if (request.statisticsOutput)
         outputs.push_back({*request.statisticsOutput, io::OutputKind::Statistics});
     io::checkOutputsCanBeWritten(outputs);
+    std::vector<fs::path> outputPaths;
+    for (const io::OutputRequest& output : outputs)
+        outputPaths.push_back(output.path);
+    removeStaleTemporariesOf(outputPaths);
 
     std::vector<film::RenderFile> renders;
     for (const fs::path& input : request.inputs) {
@@ -140,12 +151,17 @@ int runMerge(const MergeRequest& request)
     std::vector<fs::path> images = {request.output};
     if (request.picture)
         images.push_back(*request.picture);
+    if (interrupt.requested()) {
+        std::cout << "merge interrupted before its files were written: nothing written"
+                  << std::endl;
+        return kExitInterrupted;
+    }
     io::writeAllOrNothing(renderOutputs(images, request.statisticsOutput, merged, metadata,
                                         [&] { return toneMappedPicture(merged); }));
 
     char numbers[160];
-    std::snprintf(numbers, sizeof numbers, "%dx%d, %d spp", metadata.width, metadata.height,
-                  metadata.samplesPerPixel);
+    std::snprintf(numbers, sizeof numbers, "%dx%d, %lld spp", metadata.width, metadata.height,
+                  static_cast<long long>(metadata.samplesPerPixel));
     char seconds[64];
     std::snprintf(seconds, sizeof seconds, "%.2f s of rendering", metadata.renderSeconds);
     std::string line = "merged " + std::to_string(renders.size()) + " renders: " + numbers +

@@ -1,12 +1,14 @@
 #pragma once
 #include "app/CommandLine.h"
+#include "app/Interrupt.h"
 
 namespace app {
 
 // raytracer merge OUT.exr IN.exr... : combines renders of one scene, size and settings into
 // the render that holds all their samples (film/Accumulation.h), or refuses with one line
-// and writes nothing. Returns the exit status; errors propagate as exceptions whose message
-// is the line to show.
-int runMerge(const MergeRequest& request);
+// and writes nothing. Interrupted before its files are written, it writes nothing and returns
+// kExitInterrupted. Returns the exit status; errors propagate as exceptions whose message is
+// the line to show.
+int runMerge(const MergeRequest& request, const InterruptWatch& interrupt);
 
 }  // namespace app

@@ -13,6 +13,7 @@
 #include "io/OutputFiles.h"
 #include "platform/ContextFactory.h"
 #include "platform/GlfwWindowContext.h"
+#include "render/KernelChoice.h"
 #include "render/ProgressiveRenderer.h"
 #include "film/RenderFile.h"
 #include "render/ScenePreparation.h"
@@ -137,6 +138,35 @@ struct RenderRun {
     double seconds = 0.0;
 };
 
+}  // namespace
+
+void removeStaleTemporariesOf(const std::vector<std::filesystem::path>& outputs)
+{
+    for (const io::StaleTemporary& removed : io::removeStaleTemporaries(outputs))
+        std::cout << "removed " << removed.path.string() << ", a temporary file left by process "
+                  << removed.processId << ", which no longer runs" << std::endl;
+}
+
+platform::ContextRequest contextRequest(const CommandLine& line)
+{
+    platform::ContextRequest request;
+    request.kind = line.gl;
+    request.headless = line.headless;
+    request.gpuIndex = line.glDevice;
+    request.windowWidth = line.width;
+    request.windowHeight = line.height;
+    request.windowTitle = "raytracer - " + line.scene.filename().string();
+    return request;
+}
+
+std::string describeRenderingDevice(const platform::ContextIdentity& gl,
+                                    const render::KernelChoice& kernel)
+{
+    return gl.describe() + ", " + settings::pathKernelName(kernel.kernel) + " kernel";
+}
+
+namespace {
+
 // The output names make sense together: the statistics are neither the image nor the file
 // resumed.
 void checkOutputNames(const CommandLine& line)
@@ -163,21 +193,25 @@ RenderSetup prepareRender(CommandLine& line)
     if (line.resume)
         setup.resumed = readResumedRender(line, setup.scene, setup.sceneDigest);
     setup.writesFile = line.isBatch() || line.output.has_value();
-    if (setup.writesFile)
+    if (setup.writesFile) {
         io::checkOutputsCanBeWritten(outputRequests(line));
+        std::vector<std::filesystem::path> outputs = {line.outputPath()};
+        if (line.statisticsOutput)
+            outputs.push_back(*line.statisticsOutput);
+        removeStaleTemporariesOf(outputs);
+    }
     // A resumed render goes on where the file left it: no window, whose camera and settings
     // could leave that.
-    const bool headless = line.headless || line.resume || !platform::displayAvailable();
-    if (headless && !line.isBatch())
-        throw UsageError(std::string(line.headless ? "--headless" : "there is no display, so") +
+    platform::ContextRequest request = contextRequest(line);
+    request.headless = line.headless || line.resume;
+    if (platform::makesHeadlessContext(request) && !line.isBatch())
+        throw UsageError(std::string(line.headless ? "--headless"
+                                     : line.gl != platform::ContextKind::Automatic
+                                         ? "--gl " + std::string(platform::contextKindName(line.gl))
+                                         : "there is no display, so") +
                          " renders need an end: give SECONDS or --spp (the image is written "
                          "to a file)");
 
-    platform::ContextRequest request;
-    request.headless = headless;
-    request.windowWidth = line.width;
-    request.windowHeight = line.height;
-    request.windowTitle = "raytracer - " + line.scene.filename().string();
     const auto setupStart = std::chrono::steady_clock::now();
     setup.context = platform::createContext(request);
     settings::RenderSettings settings = line.settings;
@@ -289,7 +323,8 @@ std::string summaryLine(const RenderSetup& setup, const film::Accumulation& accu
                                 run.seconds, renderer.discardedSamples(), setup.samplesResumed);
     char setupText[64];
     std::snprintf(setupText, sizeof setupText, " (setup %.2f s)", setup.setupSeconds);
-    return summary + setupText;
+    return summary + setupText + " [" +
+           describeRenderingDevice(setup.context->identity(), renderer.kernel()) + "]";
 }
 
 // The picture and the statistics, with what the files say of themselves. The window's
@@ -308,17 +343,26 @@ void writeOutputs(RenderSetup& setup, const CommandLine& line, const film::Accum
             fromWindow = true;
         }
     }
-    film::RenderMetadata metadata = describeRender(line.scene, setup.sceneDigest, renderer);
+    film::RenderMetadata metadata =
+        describeRender(line.scene, setup.sceneDigest, renderer, setup.context->identity());
     metadata.renderSeconds = run.seconds;
     if (setup.resumed) {
         // The new samples of each pixel take the indices from its count on: from the
-        // fewest any pixel held to the count all reach.
+        // fewest any pixel held to the most any holds now (describeRender's count: under
+        // adaptive sampling a pixel may hold more than the frames' count).
         std::vector<film::SampleRange> ranges = setup.resumed->metadata.sampleRanges;
         ranges.push_back({line.settings.seed, setup.fewestResumed,
-                          renderer.samplesPerPixel() - setup.fewestResumed});
+                          metadata.samplesPerPixel - setup.fewestResumed});
         metadata.sampleRanges = film::normalizedRanges(ranges);
         metadata.renderSeconds += setup.resumed->metadata.renderSeconds;
         metadata.mergedFrom = setup.resumed->metadata.mergedFrom;
+        // The samples held came from the resumed file's device, the new ones from this.
+        film::RenderMetadata devices = setup.resumed->metadata;
+        film::addRenderingDevice(devices, metadata);
+        metadata.glContext = devices.glContext;
+        metadata.glRenderer = devices.glRenderer;
+        metadata.glVersion = devices.glVersion;
+        metadata.kernel = devices.kernel;
     }
     if (interrupted)
         metadata.interrupted = interruptionNote(line, renderer.samplesPerPixel(), run.seconds);
@@ -380,10 +424,8 @@ int finishRender(RenderSetup& setup, const CommandLine& line, const RenderRun& r
 
 }  // namespace
 
-int runRender(const CommandLine& commandLine)
+int runRender(const CommandLine& commandLine, const InterruptWatch& interrupt)
 {
-    // From the start: Ctrl-C while the shader compiles must not kill the program unseen.
-    InterruptWatch interrupt;
     CommandLine line = commandLine;
     RenderSetup setup = prepareRender(line);
     const RenderRun run = setup.context->hasWindow() ? runInWindow(setup, line, interrupt)
@@ -398,16 +440,29 @@ int printFeatures(const CommandLine& line)
     const render::PreparedScene prepared =
         render::prepareScene(scene::parseSceneFile(line.scene),
                              shadergen::shaderBuild(line.settings), render::defaultShaderDirectory());
-    std::cout << prepared.code.features.describe();
+    std::cout << prepared.code.features.describe() << std::flush;
+    // The OpenGL a headless render of this command line would use (a window only where
+    // --gl window asks for one), and the kernel it would run there.
+    platform::ContextRequest request = contextRequest(line);
+    request.headless = true;
+    const auto context = platform::createContext(request);
+    const render::KernelChoice kernel = render::chooseKernel(line.settings.kernel);
+    std::cout << "OpenGL:        " << context->identity().describe() << "\n"
+              << "kernel:        " << settings::pathKernelName(kernel.kernel) << " ("
+              << kernel.reason << ")\n";
     return kExitSuccess;
 }
 
 int printShader(const CommandLine& line)
 {
-    const render::PreparedScene prepared =
-        render::prepareScene(scene::parseSceneFile(line.scene),
-                             shadergen::shaderBuild(line.settings), render::defaultShaderDirectory());
-    std::cout << prepared.fragmentSource.text();
+    // No context is made: auto prints the fragment kernel's shader.
+    const settings::PathKernel kernel = line.settings.kernel == settings::PathKernel::Compute
+                                            ? settings::PathKernel::Compute
+                                            : settings::PathKernel::Fragment;
+    const render::PreparedScene prepared = render::prepareScene(
+        scene::parseSceneFile(line.scene), shadergen::shaderBuild(line.settings),
+        render::defaultShaderDirectory(), kernel);
+    std::cout << prepared.pathTracerSource.text();
     return kExitSuccess;
 }
 

@@ -10,7 +10,8 @@ namespace app {
 
 film::RenderMetadata describeRender(const std::filesystem::path& sceneFile,
                                       const std::string& sceneSha256,
-                                      const render::ProgressiveRenderer& renderer)
+                                      const render::ProgressiveRenderer& renderer,
+                                      const platform::ContextIdentity& gl)
 {
     film::RenderMetadata metadata;
     metadata.width = renderer.width();
@@ -26,6 +27,10 @@ film::RenderMetadata describeRender(const std::filesystem::path& sceneFile,
                          : renderer.samplesPerPixel();
     metadata.samplesPerPixel = most;
     metadata.sampleRanges = {{renderer.settings().seed, 0, most}};
+    metadata.glContext = gl.kind;
+    metadata.glRenderer = gl.renderer;
+    metadata.glVersion = gl.version;
+    metadata.kernel = settings::pathKernelName(renderer.kernel().kernel);
     metadata.program = programName();
     metadata.gitCommit = gitCommit();
     return metadata;

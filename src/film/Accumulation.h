@@ -8,9 +8,14 @@
 // so an accumulation is all a render needs to go on.
 #include "io/Image.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace film {
+
+// The most samples a pixel holds: counts are 32-bit floats (on the GPU and in the file),
+// which hold every whole number up to 2^24 exactly.
+inline constexpr std::int64_t kLargestSampleCount = std::int64_t(1) << 24;
 
 struct Accumulation {
     io::Image estimate;

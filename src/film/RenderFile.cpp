@@ -1,5 +1,8 @@
 #include "film/RenderFile.h"
 
+#include "io/ImageFormats.h"
+#include "film/RenderFileChecks.h"
+
 #include <stdexcept>
 
 namespace film {
@@ -19,6 +22,19 @@ const std::vector<std::string>& statisticsChannelNames()
     return names;
 }
 
+namespace {
+
+// An EXR says what its pixels were, so that a byte changed later is found (RenderFileChecks.h).
+io::OutputImage withPixelDigest(io::OutputImage output)
+{
+    if (io::lowerCaseExtension(output.path) == ".exr")
+        output.attributes.push_back(
+            {kPixelDigestAttribute, pixelDigest(output.image, output.channelNames)});
+    return output;
+}
+
+}  // namespace
+
 io::OutputImage accumulationOutput(const std::filesystem::path& path,
                                    const Accumulation& accumulation,
                                    const RenderMetadata& metadata)
@@ -33,19 +49,25 @@ io::OutputImage accumulationOutput(const std::filesystem::path& path,
             image.at(x, y, 3) = accumulation.samplesKept(x, y);
             image.at(x, y, 4) = accumulation.samplesDiscarded(x, y);
         }
-    return {path, std::move(image), metadataAttributes(metadata), accumulationChannelNames()};
+    return withPixelDigest({path, std::move(image), metadataAttributes(metadata),
+                            accumulationChannelNames()});
 }
 
 io::OutputImage statisticsOutput(const std::filesystem::path& path,
                                  const Accumulation& accumulation,
                                  const RenderMetadata& metadata)
 {
-    return {path, sampleStatistics(accumulation), metadataAttributes(metadata),
-            statisticsChannelNames()};
+    return withPixelDigest({path, sampleStatistics(accumulation), metadataAttributes(metadata),
+                            statisticsChannelNames()});
 }
 
 RenderFile readRenderFile(const std::filesystem::path& path)
 {
+    // Read only as OpenEXR: a file named otherwise is never handed to another reader.
+    if (io::lowerCaseExtension(path) != ".exr")
+        throw std::runtime_error(path.string() + " holds no accumulation: it is not an .exr "
+                                 "file, and only an .exr that this program wrote with --output "
+                                 "or merge can be merged or resumed");
     const io::ImageFileContents file = io::readImageFile(path);
     // OpenEXR keeps channels sorted by name: each is found by its name.
     std::vector<int> channels;
@@ -63,6 +85,8 @@ RenderFile readRenderFile(const std::filesystem::path& path)
                                  "raytracer:sceneSha256 attribute)");
     metadata->width = file.image.width;
     metadata->height = file.image.height;
+    checkPixelValues(file, *metadata, path.string());
+    checkPixelDigest(file, path.string());
 
     RenderFile render{Accumulation(file.image.width, file.image.height), std::move(*metadata)};
     Accumulation& accumulation = render.accumulation;

@@ -23,7 +23,8 @@ namespace film {
 const std::vector<std::string>& accumulationChannelNames();
 const std::vector<std::string>& statisticsChannelNames();
 
-// The EXR of a render: radiance, accumulation and metadata.
+// The EXR of a render: radiance, accumulation and metadata, and the SHA-256 of its pixels
+// (film/RenderFileChecks.h).
 io::OutputImage accumulationOutput(const std::filesystem::path& path,
                                    const Accumulation& accumulation,
                                    const RenderMetadata& metadata);
@@ -37,9 +38,13 @@ struct RenderFile {
     RenderMetadata metadata;  // its width and height the image's
 };
 
-// Reads an EXR written by accumulationOutput. Throws std::runtime_error with a one-line
-// reason naming the file when it cannot be read, holds no accumulation (a picture, a PFM,
-// an EXR of another program) or no metadata of this program.
+// Reads an EXR written by accumulationOutput, as untrusted: only a regular file named .exr,
+// only by OpenEXR's reader, its size within io/ImageFile.h's limits, its metadata within
+// what a render holds, every pixel's values checked and, where it says what its pixels were
+// (raytracer:pixelSha256), that too (film/RenderFileChecks.h). Throws std::runtime_error
+// with a one-line reason naming the file (and the first pixel and channel at fault) when it
+// cannot be read, holds no accumulation (a picture, a PFM, an EXR of another program), no
+// metadata of this program, or a value no render holds.
 RenderFile readRenderFile(const std::filesystem::path& path);
 
 }  // namespace film

@@ -1,5 +1,7 @@
 #include "film/RenderMetadata.h"
 
+#include "film/Accumulation.h"
+
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -7,6 +9,7 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace film {
 
@@ -19,7 +22,8 @@ std::string floatText(float value)
     return settings::shortestFloatText(value);
 }
 
-bool readInteger(const std::string& text, int& value)
+template <typename Integer>
+bool readInteger(const std::string& text, Integer& value)
 {
     const char* last = text.data() + text.size();
     const auto [end, error] = std::from_chars(text.data(), last, value);
@@ -86,6 +90,12 @@ std::vector<io::ImageAttribute> metadataAttributes(const RenderMetadata& metadat
     for (const settings::SettingRow* setting : imageSettings())
         attributes.push_back(
             {kPrefix + setting->description.metadataKey, setting->format(metadata.settings)});
+    for (const auto& [key, value] : {std::pair{"glContext", &metadata.glContext},
+                                     std::pair{"glRenderer", &metadata.glRenderer},
+                                     std::pair{"glVersion", &metadata.glVersion},
+                                     std::pair{"kernel", &metadata.kernel}})
+        if (!value->empty())
+            attributes.push_back({kPrefix + key, *value});
     attributes.push_back({kPrefix + "program", metadata.program});
     if (!metadata.gitCommit.empty())
         attributes.push_back({kPrefix + "gitCommit", metadata.gitCommit});
@@ -125,19 +135,30 @@ std::optional<RenderMetadata> metadataFromAttributes(
     metadata.sceneSha256 = required("sceneSha256");
     if (!parseCamera(required("camera"), metadata.camera))
         throw malformed("camera", "is not 'eye X Y Z target X Y Z up X Y Z fovy F'");
+    const std::string largest = std::to_string(kLargestSampleCount);
     if (!readInteger(required("samplesPerPixel"), metadata.samplesPerPixel) ||
-        metadata.samplesPerPixel < 0)
-        throw malformed("samplesPerPixel", "is not a count");
+        metadata.samplesPerPixel < 0 || metadata.samplesPerPixel > kLargestSampleCount)
+        throw malformed("samplesPerPixel", "is '" + values["samplesPerPixel"] +
+                                               "', not a count from 0 to " + largest);
     try {
         metadata.sampleRanges = parseSampleRanges(required("sampleRanges"));
     } catch (const std::invalid_argument& error) {
         throw malformed("sampleRanges", std::string("is malformed: ") + error.what());
     }
+    // A pixel's sample indices run from 0 to its count, which is at most the largest.
+    for (const SampleRange& range : metadata.sampleRanges)
+        if (range.first > kLargestSampleCount || range.count > kLargestSampleCount - range.first)
+            throw malformed("sampleRanges", "holds " + std::to_string(range.count) +
+                                                " samples of seed " + std::to_string(range.seed) +
+                                                " from index " + std::to_string(range.first) +
+                                                ", beyond the " + largest +
+                                                " samples a pixel can hold");
     char* end = nullptr;
     const std::string& seconds = required("renderSeconds");
     metadata.renderSeconds = std::strtod(seconds.c_str(), &end);
-    if (seconds.empty() || end != seconds.c_str() + seconds.size())
-        throw malformed("renderSeconds", "is not a number");
+    if (seconds.empty() || end != seconds.c_str() + seconds.size() ||
+        !std::isfinite(metadata.renderSeconds) || metadata.renderSeconds < 0.0)
+        throw malformed("renderSeconds", "is '" + seconds + "', not a number of seconds");
     for (const settings::SettingRow* setting : imageSettings()) {
         const std::string& key = setting->description.metadataKey;
         if (!setting->read(metadata.settings, required(key)))
@@ -146,6 +167,10 @@ std::optional<RenderMetadata> metadataFromAttributes(
     }
     metadata.program = required("program");
     metadata.gitCommit = values["gitCommit"];
+    metadata.glContext = values["glContext"];
+    metadata.glRenderer = values["glRenderer"];
+    metadata.glVersion = values["glVersion"];
+    metadata.kernel = values["kernel"];
     metadata.interrupted = values["interrupted"];
     std::istringstream merged(values["mergedFrom"]);
     for (std::string line; std::getline(merged, line);)
@@ -180,6 +205,23 @@ std::optional<MetadataDifference> imageDifference(const RenderMetadata& first,
         return MetadataDifference{"the program build", describeProgram(first),
                                   describeProgram(second)};
     return std::nullopt;
+}
+
+void addRenderingDevice(RenderMetadata& metadata, const RenderMetadata& other)
+{
+    auto add = [](std::string& values, const std::string& value) {
+        if (value.empty())
+            return;
+        std::istringstream list(values);
+        for (std::string item; std::getline(list, item, ';');)
+            if (item == value || item == " " + value)
+                return;
+        values += (values.empty() ? "" : "; ") + value;
+    };
+    add(metadata.glContext, other.glContext);
+    add(metadata.glRenderer, other.glRenderer);
+    add(metadata.glVersion, other.glVersion);
+    add(metadata.kernel, other.kernel);
 }
 
 std::string describeProgram(const RenderMetadata& metadata)

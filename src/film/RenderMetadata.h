@@ -8,6 +8,7 @@
 #include "film/SampleRanges.h"
 #include "scene/Scene.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,13 +28,24 @@ struct RenderMetadata {
     // defaults when read back.
     settings::RenderSettings settings;
     // Samples per pixel the render aimed at and reached (an interrupted one: the most any
-    // pixel holds); for a merge, the sum over its inputs.
-    int samplesPerPixel = 0;
+    // pixel holds); for a merge, the sum over its inputs. 64-bit, so that a sum of counts read
+    // from files cannot wrap before it is checked against kLargestSampleCount.
+    std::int64_t samplesPerPixel = 0;
     std::vector<SampleRange> sampleRanges;
     // Seconds spent rendering the samples held (summed over resumed and merged renders).
     double renderSeconds = 0.0;
     // Empty unless the render was interrupted; then how it stopped.
     std::string interrupted;
+    // What rendered the samples: the OpenGL context's kind, GL_RENDERER and GL_VERSION
+    // (platform/GlContext.h's ContextIdentity), and the kernel that traced them
+    // (settings/PathKernel.h). For the record only: renders on other devices or kernels
+    // estimate the same image and may be merged. A render resumed or merged from others
+    // lists each distinct value, "; " between them. Empty in files written before they were
+    // recorded.
+    std::string glContext;
+    std::string glRenderer;
+    std::string glVersion;
+    std::string kernel;
     std::string program;    // "raytracer 1.0.0"
     std::string gitCommit;  // empty when the program was not built from a git checkout
     // The files a merge read, in order.
@@ -53,7 +65,9 @@ std::vector<io::ImageAttribute> metadataAttributes(const RenderMetadata& metadat
 
 // From a file's attributes; nothing when they hold none of this program's metadata (no
 // raytracer:sceneSha256). Throws std::runtime_error naming `file` and the attribute when one
-// is missing or malformed. width and height are left 0.
+// is missing or malformed, or holds what no render holds: samples per pixel or a sample index
+// beyond kLargestSampleCount (film/Accumulation.h), seconds that are negative or not
+// finite. width and height are left 0.
 std::optional<RenderMetadata> metadataFromAttributes(
     const std::vector<io::ImageAttribute>& attributes, const std::string& file);
 
@@ -66,6 +80,9 @@ struct MetadataDifference {
 };
 std::optional<MetadataDifference> imageDifference(const RenderMetadata& first,
                                                   const RenderMetadata& second);
+
+// Adds `other`'s context, renderer, version and kernel to `metadata`'s, each value once.
+void addRenderingDevice(RenderMetadata& metadata, const RenderMetadata& other);
 
 // "raytracer 1.0.0, commit 0123abcd..." or "raytracer 1.0.0 (no git commit)".
 std::string describeProgram(const RenderMetadata& metadata);

@@ -38,7 +38,9 @@ GLuint compile(GLenum stage, const std::string& source, const std::string& label
     if (compiled != GL_TRUE) {
         const std::string log = shaderLog(shader);
         glDeleteShader(shader);
-        const char* stageName = stage == GL_VERTEX_SHADER ? "vertex" : "fragment";
+        const char* stageName = stage == GL_VERTEX_SHADER     ? "vertex"
+                                : stage == GL_COMPUTE_SHADER ? "compute"
+                                                             : "fragment";
         throw std::runtime_error("the " + std::string(stageName) + " shader of " + label +
                                  " does not compile:\n" + (explain ? explain(log) : log));
     }
@@ -58,12 +60,27 @@ Program::Program(const std::string& vertexSource, const std::string& fragmentSou
         glDeleteShader(vertex);
         throw;
     }
+    link({vertex, fragment}, label, explainFragmentLog);
+}
+
+Program Program::compute(const std::string& computeSource, const std::string& label,
+                         const LogExplainer& explainLog)
+{
+    Program program;
+    program.link({compile(GL_COMPUTE_SHADER, computeSource, label, explainLog)}, label,
+                 explainLog);
+    return program;
+}
+
+void Program::link(const std::vector<GLuint>& shaders, const std::string& label,
+                   const LogExplainer& explainLog)
+{
     id_ = glCreateProgram();
-    glAttachShader(id_, vertex);
-    glAttachShader(id_, fragment);
+    for (GLuint shader : shaders)
+        glAttachShader(id_, shader);
     glLinkProgram(id_);
-    glDeleteShader(vertex);
-    glDeleteShader(fragment);
+    for (GLuint shader : shaders)
+        glDeleteShader(shader);
     GLint linked = GL_FALSE;
     glGetProgramiv(id_, GL_LINK_STATUS, &linked);
     if (linked != GL_TRUE) {
@@ -71,7 +88,7 @@ Program::Program(const std::string& vertexSource, const std::string& fragmentSou
         glDeleteProgram(id_);
         id_ = 0;
         throw std::runtime_error("the shaders of " + label + " do not link:\n" +
-                                 (explainFragmentLog ? explainFragmentLog(log) : log));
+                                 (explainLog ? explainLog(log) : log));
     }
 }
 

@@ -2,19 +2,20 @@
 
 #include <algorithm>
 #include <cctype>
+#include <stdexcept>
 
 namespace io {
 
 const std::vector<ImageFormat>& outputFormats()
 {
     static const std::vector<ImageFormat> formats = {
-        {{".ppm"}, false, false, "the tone-mapped picture, 8-bit (binary PPM)"},
-        {{".png"}, false, false, "the tone-mapped picture, 8-bit"},
-        {{".jpg", ".jpeg"}, false, false, "the tone-mapped picture, 8-bit, lossy (JPEG)"},
-        {{".tif", ".tiff"}, false, false, "the tone-mapped picture, 8-bit (TIFF)"},
-        {{".exr"}, true, true, "linear HDR radiance, 32-bit float (OpenEXR)"},
-        {{".pfm"}, true, true, "linear HDR radiance, 32-bit float (portable float map)"},
-        {{".hdr"}, true, false, "linear HDR radiance, Radiance RGBE (about 1% precision)"},
+        {{".ppm"}, false, false, "the tone-mapped picture, 8-bit (binary PPM)", "pnm"},
+        {{".png"}, false, false, "the tone-mapped picture, 8-bit", "png"},
+        {{".jpg", ".jpeg"}, false, false, "the tone-mapped picture, 8-bit, lossy (JPEG)", "jpeg"},
+        {{".tif", ".tiff"}, false, false, "the tone-mapped picture, 8-bit (TIFF)", "tiff"},
+        {{".exr"}, true, true, "linear HDR radiance, 32-bit float (OpenEXR)", "openexr"},
+        {{".pfm"}, true, true, "linear HDR radiance, 32-bit float (portable float map)", "pnm"},
+        {{".hdr"}, true, false, "linear HDR radiance, Radiance RGBE (about 1% precision)", "hdr"},
     };
     return formats;
 }
@@ -35,6 +36,19 @@ const ImageFormat* outputFormatOf(const std::filesystem::path& path)
             format.extensions.end())
             return &format;
     return nullptr;
+}
+
+const ImageFormat& imageFormatOf(const std::filesystem::path& path)
+{
+    const ImageFormat* format = outputFormatOf(path);
+    if (format == nullptr) {
+        std::vector<const ImageFormat*> all;
+        for (const ImageFormat& known : outputFormats())
+            all.push_back(&known);
+        throw std::runtime_error(path.string() + ": unknown image format (" +
+                                 listExtensions(all) + ")");
+    }
+    return *format;
 }
 
 std::string listExtensions(const std::vector<const ImageFormat*>& formats)

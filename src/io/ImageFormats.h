@@ -12,6 +12,9 @@ struct ImageFormat {
     bool linearRadiance;                  // linear HDR values; else a tone-mapped picture
     bool float32;                         // holds 32-bit floats exactly (per-pixel statistics)
     std::string holds;                    // for --help
+    // OpenImageIO's name for the format: the only reader and writer tried for its files
+    // (a file is never handed to another format's reader to guess what it is).
+    std::string openImageIoName;
 };
 
 const std::vector<ImageFormat>& outputFormats();
@@ -21,6 +24,10 @@ std::string lowerCaseExtension(const std::filesystem::path& path);
 
 // The format `path`'s extension names (in any case), or nullptr.
 const ImageFormat* outputFormatOf(const std::filesystem::path& path);
+
+// The format `path`'s extension names; throws std::runtime_error naming the file and the
+// extensions known when it names none.
+const ImageFormat& imageFormatOf(const std::filesystem::path& path);
 
 // ".ppm, .png, ..., .hdr": every extension of `formats`, for messages.
 std::string listExtensions(const std::vector<const ImageFormat*>& formats);

@@ -41,9 +41,31 @@ struct OutputImage {
 
 // Writes every image under a temporary name beside its destination (same folder, so the
 // rename cannot cross file systems) and renames them over their destinations only once all of
-// them are complete. On a failure before that, every temporary file is removed and no
-// destination is touched. Each rename is atomic; only a folder that changes between two
-// renames (removed, made read-only) could leave the first done and the second not.
+// them are complete. Each is encoded in memory and written by the program itself: every write
+// checked, the file synchronised to the disk (fsync), its size on disk compared with what was
+// written, and its header read back; the folder is synchronised before and after the renames.
+// On a failure before the renames, every temporary file is removed, no destination is touched,
+// and the error names the user's path and the system's reason ("No space left on device").
+// Each rename is atomic; only a folder that changes between two renames (removed, made
+// read-only) could leave the first done and the second not.
 void writeAllOrNothing(const std::vector<OutputImage>& images);
+
+// A temporary file of writeAllOrNothing left behind by a process that ended before it
+// renamed it (killed, or the machine stopped): ".NAME.partial-HOST-PID-N.EXT" beside
+// NAME.EXT.
+struct StaleTemporary {
+    std::filesystem::path path;
+    long processId = 0;
+};
+
+// The name writeAllOrNothing writes the `index`th of its images under before it renames it.
+std::filesystem::path temporaryNameFor(const std::filesystem::path& destination,
+                                       std::size_t index);
+
+// Removes the temporary files of these destinations (by their names, above) whose process no
+// longer runs on this machine, and returns them. Temporaries of processes still running, of
+// other machines (a folder shared over the network) and of other destinations are left.
+std::vector<StaleTemporary> removeStaleTemporaries(
+    const std::vector<std::filesystem::path>& destinations);
 
 }  // namespace io

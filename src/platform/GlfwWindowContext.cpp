@@ -91,7 +91,7 @@ GlfwWindowContext::GlfwWindowContext(int width, int height, const std::string& t
     }
     // Frames are paced by the renderer, not by the display's refresh.
     glfwSwapInterval(0);
-    description_ = describeCurrentContext("GLFW window");
+    identity_ = identifyCurrentContext("GLFW window");
 }
 
 GlfwWindowContext::~GlfwWindowContext()

@@ -17,7 +17,7 @@ public:
     GlfwWindowContext& operator=(const GlfwWindowContext&) = delete;
 
     bool hasWindow() const override { return true; }
-    std::string description() const override { return description_; }
+    const ContextIdentity& identity() const override { return identity_; }
     DrawableSize windowFramebufferSize() const override;
     void present() override;
     bool closeRequested() override;
@@ -43,7 +43,7 @@ private:
     static void onScroll(GLFWwindow* window, double x, double y);
 
     GLFWwindow* window_ = nullptr;
-    std::string description_;
+    ContextIdentity identity_;
     WindowInput input_;
     glm::dvec2 cursor_{0.0};
     bool cursorKnown_ = false;

@@ -59,7 +59,7 @@ OsMesaContext::OsMesaContext()
         OSMesaDestroyContext(context_);
         throw;
     }
-    description_ = describeCurrentContext("OSMesa");
+    identity_ = identifyCurrentContext("OSMesa");
 }
 
 OsMesaContext::~OsMesaContext()

@@ -17,12 +17,12 @@ public:
     OsMesaContext& operator=(const OsMesaContext&) = delete;
 
     bool hasWindow() const override { return false; }
-    std::string description() const override { return description_; }
+    const ContextIdentity& identity() const override { return identity_; }
 
 private:
     OSMesaContext context_ = nullptr;
     std::vector<unsigned char> defaultFramebuffer_;
-    std::string description_;
+    ContextIdentity identity_;
 };
 
 }  // namespace platform

@@ -38,8 +38,10 @@ void ProgramUniforms::set(const std::string& name, const settings::UniformValue&
                 glUniform2fv(at, 1, glm::value_ptr(v));
             else if constexpr (std::is_same_v<T, glm::vec3>)
                 glUniform3fv(at, 1, glm::value_ptr(v));
-            else
+            else if constexpr (std::is_same_v<T, glm::uvec2>)
                 glUniform2ui(at, v.x, v.y);
+            else
+                glUniform4iv(at, 1, glm::value_ptr(v));
         },
         value);
 }

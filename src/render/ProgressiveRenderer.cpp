@@ -47,19 +47,29 @@ void checkRenderSize(int width, int height)
 
 ProgressiveRenderer::ProgressiveRenderer(const scene::Scene& scene, int width, int height,
                                          const settings::RenderSettings& settings)
-    : ProgressiveRenderer(prepareScene(scene, shadergen::shaderBuild(settings), defaultShaderDirectory()),
-                          width, height, settings)
+    : ProgressiveRenderer(chooseKernel(settings.kernel), scene, width, height, settings)
 {
 }
 
-ProgressiveRenderer::ProgressiveRenderer(PreparedScene prepared, int width, int height,
+ProgressiveRenderer::ProgressiveRenderer(const KernelChoice& kernel, const scene::Scene& scene,
+                                         int width, int height,
+                                         const settings::RenderSettings& settings)
+    : ProgressiveRenderer(prepareScene(scene, shadergen::shaderBuild(settings),
+                                       defaultShaderDirectory(), kernel.kernel),
+                          kernel, width, height, settings)
+{
+}
+
+ProgressiveRenderer::ProgressiveRenderer(PreparedScene prepared, const KernelChoice& kernel,
+                                         int width, int height,
                                          const settings::RenderSettings& settings)
     : settings_(settings),
+      kernel_(kernel),
       scene_(std::move(prepared.visible)),
       code_(std::move(prepared.code)),
       uniforms_(std::move(prepared.uniforms)),
       program_((checkRenderSize(width, height),
-                std::make_unique<PathTracerProgram>(prepared.fragmentSource,
+                std::make_unique<PathTracerProgram>(prepared.pathTracerSource, kernel.kernel,
                                                     defaultShaderDirectory()))),
       pigmentTextures_(loadPigmentTextures(uniforms_.textureLayers)),
       targets_(width, height),
@@ -82,20 +92,14 @@ void ProgressiveRenderer::generateDriverCode()
 {
     program_->program().use();
     setDrawUniforms(0, 0, 0);
-    // Every uniform the shader declares is set by now: the scene's and the settings' by
-    // uploadAll, the draw's just above.
-    program_->uniforms().checkEveryDeclaredSet();
     targets_.previous().estimate.bind(kEstimateUnit);
     targets_.previous().moments.bind(kMomentsUnit);
     pigmentTextures_.texture.bind(kPigmentTexturesUnit);
-    targets_.next().framebuffer.bindForDrawing();
-    glViewport(0, 0, width(), height());
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(0, 0, 1, 1);
-    triangle_.drawFullscreenTriangle();
+    program_->trace(targets_.next(), {0, 0, 1, 1}, width(), height(), triangle_);
+    // Every uniform the shader declares is set by now: the scene's and the settings' by
+    // uploadAll, the draw's by setDrawUniforms, the compute kernel's region by trace.
+    program_->uniforms().checkEveryDeclaredSet();
     glFinish();
-    glDisable(GL_SCISSOR_TEST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     gl::throwOnGlError("generating the shader's code");
 }
 
@@ -127,8 +131,8 @@ void ProgressiveRenderer::setDrawUniforms(int samplesPerFrame, int sampleTarget,
 ReloadDecision ProgressiveRenderer::setScene(const scene::Scene& original,
                                              const std::vector<std::filesystem::path>& changedFiles)
 {
-    PreparedScene prepared =
-        prepareScene(original, shadergen::shaderBuild(settings_), defaultShaderDirectory());
+    PreparedScene prepared = prepareScene(original, shadergen::shaderBuild(settings_),
+                                          defaultShaderDirectory(), kernel_.kernel);
     const ReloadDecision decision =
         decideReload(code_, uniforms_, prepared.code, prepared.uniforms, changedFiles);
     if (decision.changesNothing)
@@ -137,7 +141,8 @@ ReloadDecision ProgressiveRenderer::setScene(const scene::Scene& original,
     // renderer keeps the old ones.
     std::unique_ptr<PathTracerProgram> program =
         decision.rebuildShader
-            ? std::make_unique<PathTracerProgram>(prepared.fragmentSource, defaultShaderDirectory())
+            ? std::make_unique<PathTracerProgram>(prepared.pathTracerSource, kernel_.kernel,
+                                                  defaultShaderDirectory())
             : nullptr;
     std::optional<PigmentTextures> textures;
     if (decision.reloadTextures)
@@ -170,9 +175,11 @@ void ProgressiveRenderer::setSettings(const settings::RenderSettings& settings)
 {
     const settings::ShaderVariant variant = settings_.variant;
     const bool switchableEnvironment = settings_.switchableEnvironment;
+    const settings::PathKernel kernel = settings_.kernel;
     settings_ = settings;
     settings_.variant = variant;
     settings_.switchableEnvironment = switchableEnvironment;
+    settings_.kernel = kernel;
     uploadAll();
     clearAccumulation();
 }
@@ -248,13 +255,8 @@ void ProgressiveRenderer::renderPreview(int divisor, int maxBounces)
     source.estimate.bind(kEstimateUnit);
     source.moments.bind(kMomentsUnit);
     pigmentTextures_.texture.bind(kPigmentTexturesUnit);
-    targets_.next().framebuffer.bindForDrawing();
-    glViewport(0, 0, width(), height());
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(0, 0, previewWidth, previewHeight);
-    triangle_.drawFullscreenTriangle();
-    glDisable(GL_SCISSOR_TEST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    program_->trace(targets_.next(), {0, 0, previewWidth, previewHeight}, width(), height(),
+                    triangle_);
     uniforms.set("uImageSize",
                  glm::vec2(static_cast<float>(width()), static_cast<float>(height())));
     uniforms.set("uMaxBounces", settings_.maxBounces);
@@ -321,22 +323,12 @@ bool ProgressiveRenderer::drawFrame(const std::function<bool()>& keepGoing, int 
     source.moments.bind(kMomentsUnit);
     pigmentTextures_.texture.bind(kPigmentTexturesUnit);
     tileSampleTargets_.bind(kTileSampleTargetsUnit);
-    destination.framebuffer.bindForDrawing();
-    // The viewport stays the whole image so gl_FragCoord is the pixel; the scissor picks
-    // the band.
-    glViewport(0, 0, width(), height());
-    glEnable(GL_SCISSOR_TEST);
-
     for (int row = 0; row < height();) {
-        if (row > 0 && keepGoing && !keepGoing()) {
-            glDisable(GL_SCISSOR_TEST);
-            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        if (row > 0 && keepGoing && !keepGoing())
             return false;
-        }
         const int rows = std::min(rowsPerBand_, height() - row);
         const auto bandStart = std::chrono::steady_clock::now();
-        glScissor(0, row, width(), rows);
-        triangle_.drawFullscreenTriangle();
+        program_->trace(destination, {0, row, width(), rows}, width(), height(), triangle_);
         glFinish();
         const double seconds = secondsSince(bandStart);
         row += rows;
@@ -347,8 +339,6 @@ bool ProgressiveRenderer::drawFrame(const std::function<bool()>& keepGoing, int 
             rowsPerBand_ = std::clamp(static_cast<int>(rowsForTarget), 1, height());
         }
     }
-    glDisable(GL_SCISSOR_TEST);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
     gl::throwOnGlError("rendering a frame");
     targets_.swap();
     const double frameSeconds = secondsSince(frameStart);

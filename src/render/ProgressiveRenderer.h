@@ -26,7 +26,8 @@ namespace render {
 // one path per pixel to each pixel's running estimate.
 class ProgressiveRenderer {
 public:
-    // Builds the shader for the scene (specialised or general, per settings.variant) and the
+    // Builds the shader for the scene (specialised or general, per settings.variant; for the
+    // kernel settings.kernel stands for in this context, render/KernelChoice.h) and the
     // accumulation targets. Objects that do nothing to light (scene/InvisibleObjects.h) are
     // left out. Throws with a readable message when a shader does not compile,
     // a texture cannot be read, or the size exceeds what the GL supports.
@@ -118,6 +119,8 @@ public:
     float exposure() const { return exposure_; }
 
     const scene::SceneFeatures& features() const { return code_.features; }
+    // The kernel that traces the paths (settings().kernel as chosen in this context), and why.
+    const KernelChoice& kernel() const { return kernel_; }
     double compileSeconds() const { return program_->compileSeconds(); }
     // Duration of the first frame, which includes the driver's code generation.
     double firstFrameSeconds() const { return firstFrameSeconds_; }
@@ -125,8 +128,10 @@ public:
     double lastSecondsPerSample() const { return lastSecondsPerSample_; }
 
 private:
-    ProgressiveRenderer(PreparedScene prepared, int width, int height,
-                        const settings::RenderSettings& settings);
+    ProgressiveRenderer(const KernelChoice& kernel, const scene::Scene& scene, int width,
+                        int height, const settings::RenderSettings& settings);
+    ProgressiveRenderer(PreparedScene prepared, const KernelChoice& kernel, int width,
+                        int height, const settings::RenderSettings& settings);
     void uploadAll();
     void setDrawUniforms(int samplesPerFrame, int sampleTarget, int tileSize);
     void generateDriverCode();
@@ -138,6 +143,7 @@ private:
     io::Image readTarget(const gl::Texture& texture, int channels) const;
 
     settings::RenderSettings settings_;
+    KernelChoice kernel_;  // never Automatic
     scene::Scene scene_;  // without its invisible objects
     shadergen::SceneShaderCode code_;
     SceneUniforms uniforms_;

@@ -7,13 +7,14 @@
 namespace render {
 
 PreparedScene prepareScene(const scene::Scene& scene, const shadergen::ShaderBuild& build,
-                           const std::filesystem::path& shaderDirectory)
+                           const std::filesystem::path& shaderDirectory,
+                           settings::PathKernel kernel)
 {
     PreparedScene prepared;
     prepared.visible = scene::dropInvisibleObjects(scene);
     prepared.code = generateSceneShaderCode(prepared.visible, build);
     prepared.uniforms = packSceneUniforms(prepared.visible, prepared.code);
-    prepared.fragmentSource = assemblePathTracerSource(prepared.code, shaderDirectory);
+    prepared.pathTracerSource = assemblePathTracerSource(prepared.code, shaderDirectory, kernel);
     return prepared;
 }
 

@@ -1,9 +1,10 @@
 #pragma once
 // The one preparation stage between a parsed scene and the GPU: objects that do nothing to
 // light are dropped, the shader code is generated for what is left, its numbers are packed
-// and the fragment shader is assembled. Pure (it reads shader files, never GL state): the
+// and the path-tracing shader is assembled for a kernel. Pure (it reads shader files, never GL state): the
 // renderer, `--features`, `--print-shader` and the benchmarks all prepare a scene here, so
 // they all see the same visible scene, features and source.
+#include "settings/PathKernel.h"
 #include "settings/RenderSettings.h"
 #include "shadergen/SceneShaderGenerator.h"
 #include "render/SceneUniforms.h"
@@ -18,11 +19,13 @@ struct PreparedScene {
     scene::Scene visible;      // without its invisible objects (scene/InvisibleObjects.h)
     shadergen::SceneShaderCode code;      // code.features: what the shader is built for
     SceneUniforms uniforms;    // every number the shader reads from the scene
-    shadergen::ShaderSource fragmentSource;
+    shadergen::ShaderSource pathTracerSource;  // for the kernel asked (fragment or compute)
 };
 
+// `kernel`: Fragment or Compute (the renderer chooses Automatic's in its context).
 PreparedScene prepareScene(const scene::Scene& scene, const shadergen::ShaderBuild& build,
-                           const std::filesystem::path& shaderDirectory);
+                           const std::filesystem::path& shaderDirectory,
+                           settings::PathKernel kernel = settings::PathKernel::Fragment);
 
 // The project's shaders/ folder (FileLookup::dataDirectory()).
 std::filesystem::path defaultShaderDirectory();

@@ -23,10 +23,10 @@ double average(const glm::dvec3& v)
 // A row of sceneValueUniforms(): the GLSL type follows from what `value` returns.
 template <typename Value>
 SceneValueUniform sceneValue(const char* name, const char* module,
-                             Value (*value)(const UniformSources&))
+                             Value (*value)(const UniformSources&), const char* guard = "")
 {
     const std::string uniform = name;
-    return {{settings::glslTypeOf<Value>(), uniform, "g" + uniform.substr(1), module},
+    return {{settings::glslTypeOf<Value>(), uniform, "g" + uniform.substr(1), module, guard},
             [value](const UniformSources& sources) -> settings::UniformValue {
                 return value(sources);
             }};
@@ -52,6 +52,13 @@ const std::vector<SceneValueUniform>& sceneValueUniforms()
         sceneValue<glm::vec3>("uCameraForward", "camera.glsl",
                               [](S s) { return s.scene.cameraFrame.forward; }),
         sceneValue<float>("uTanHalfFovy", "camera.glsl", [](S s) { return s.scene.tanHalfFovy; }),
+        // A thin lens's aperture and plane of focus (camera.glsl), in scenes that have one.
+        sceneValue<float>(
+            "uLensRadius", "camera.glsl", [](S s) { return s.scene.lens.apertureRadius; },
+            "HAS_THIN_LENS"),
+        sceneValue<float>(
+            "uFocusDistance", "camera.glsl", [](S s) { return s.scene.lens.focusDistance; },
+            "HAS_THIN_LENS"),
         sceneValue<glm::vec2>("uImageSize", "camera.glsl", [](S s) {
             return glm::vec2(static_cast<float>(s.width), static_cast<float>(s.height));
         }),
@@ -103,7 +110,9 @@ std::vector<double> lightPowers(const Scene& scene)
 bool SceneUniforms::operator==(const SceneUniforms& other) const
 {
     return objects == other.objects && pigments == other.pigments &&
-           finishes == other.finishes && lights == other.lights &&
+           finishes == other.finishes && conductors == other.conductors &&
+           lights == other.lights && lens.apertureRadius == other.lens.apertureRadius &&
+           lens.focusDistance == other.lens.focusDistance &&
            sphereLightPieces == other.sphereLightPieces &&
            textureLayers == other.textureLayers &&
            cameraFrame.right == other.cameraFrame.right &&
@@ -144,7 +153,14 @@ SceneUniforms packSceneUniforms(const Scene& scene, const shadergen::SceneShader
         record.phongExponent = finish.phongExponent;
         record.material = describe(finish.material()).code;
         record.ior = finish.ior;
+        record.roughness = finish.roughness;
         shadergen::packRecord(shadergen::finishRecordLayout(), record, packed.finishes);
+        shadergen::ConductorRecord conductor;
+        const ComplexIor ior = finish.conductorIor.value_or(ComplexIor{});
+        conductor.eta = ior.eta;
+        conductor.hasComplexIor = finish.conductorIor.has_value();
+        conductor.k = ior.k;
+        shadergen::packRecord(shadergen::conductorRecordLayout(), conductor, packed.conductors);
     }
 
     const std::vector<SphereLight> spheres = sphereLights(scene);
@@ -197,6 +213,7 @@ SceneUniforms packSceneUniforms(const Scene& scene, const shadergen::SceneShader
     packed.cameraEye = scene.camera.eye;
     packed.tanHalfFovy =
         std::tan(0.5f * scene.camera.verticalFieldOfViewDegrees * kPi / 180.0f);
+    packed.lens = scene.camera.lens.value_or(ThinLens{});
     packed.bounds = computeSceneBounds(scene);
     packed.environment = scene.environment;
     return packed;
@@ -214,6 +231,7 @@ void uploadUniforms(ProgramUniforms& program, const UniformSources& sources,
     program.setArray(shadergen::objectRecordLayout().uniform, sources.scene.objects);
     program.setArray(shadergen::pigmentRecordLayout().uniform, sources.scene.pigments);
     program.setArray(shadergen::finishRecordLayout().uniform, sources.scene.finishes);
+    program.setArray(shadergen::conductorRecordLayout().uniform, sources.scene.conductors);
     program.setArray(shadergen::lightRecordLayout().uniform, sources.scene.lights);
 
     // The values, where the shader has the module that reads them.

@@ -23,6 +23,8 @@ struct SceneUniforms {
     std::vector<glm::ivec4> objects;
     std::vector<glm::vec4> pigments;
     std::vector<glm::vec4> finishes;
+    // Per finish, the rough conductor's complex index of refraction (scene_data.glsl).
+    std::vector<glm::vec4> conductors;
     std::vector<glm::vec4> lights;
     // The culling bits of the sphere lights that have one (scene_data.glsl).
     std::uint32_t sphereLightPieces = 0;
@@ -32,6 +34,7 @@ struct SceneUniforms {
     scene::CameraFrame cameraFrame;
     glm::vec3 cameraEye{0.0f};
     float tanHalfFovy = 1.0f;
+    scene::ThinLens lens;  // aperture radius 0: a pinhole
     scene::SceneBounds bounds;
     scene::Environment environment;
 

@@ -4,8 +4,12 @@ namespace scene {
 
 bool sameCamera(const Camera& a, const Camera& b)
 {
+    const bool sameLens =
+        a.lens.has_value() == b.lens.has_value() &&
+        (!a.lens || (a.lens->apertureRadius == b.lens->apertureRadius &&
+                     a.lens->focusDistance == b.lens->focusDistance));
     return a.eye == b.eye && a.target == b.target && a.up == b.up &&
-           a.verticalFieldOfViewDegrees == b.verticalFieldOfViewDegrees;
+           a.verticalFieldOfViewDegrees == b.verticalFieldOfViewDegrees && sameLens;
 }
 
 CameraFrame cameraFrame(const Camera& camera)
@@ -24,6 +28,8 @@ CameraFrame cameraFrame(const Camera& camera)
 
 MaterialKind Finish::material() const
 {
+    if (keywordMaterial)
+        return *keywordMaterial;
     if (transmission > 0.0f)
         return MaterialKind::Dielectric;
     if (reflection > 0.0f)

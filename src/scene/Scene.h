@@ -4,6 +4,7 @@
 #include "scene/CsgOperators.h"
 #include "scene/Environments.h"
 #include "scene/Materials.h"
+#include "scene/Metals.h"
 #include "scene/Pigments.h"
 #include "scene/Primitives.h"
 #include "scene/Transform.h"
@@ -18,11 +19,20 @@
 
 namespace scene {
 
+// A thin lens (the `lens` extension of the camera line): rays leave a disk of this radius
+// around the eye, across the view, and meet again on the plane of focus, at this distance
+// along the view direction. Without one the camera is a pinhole.
+struct ThinLens {
+    float apertureRadius = 0.0f;
+    float focusDistance = 1.0f;
+};
+
 struct Camera {
     glm::vec3 eye{0.0f};
     glm::vec3 target{0.0f, 0.0f, -1.0f};
     glm::vec3 up{0.0f, 1.0f, 0.0f};
     float verticalFieldOfViewDegrees = 45.0f;
+    std::optional<ThinLens> lens;
 };
 
 // Orthonormal camera frame as the format defines it: forward = normalize(target - eye),
@@ -49,7 +59,17 @@ struct Finish {
     float transmission = 0.0f;  // kt: a switch, only > 0 matters
     float ior = 1.0f;
 
-    // The format's selection order: kt > 0, else kr > 0, else alpha > 0, else Lambertian.
+    // A finish written with a keyword (scene/Materials.h) instead of the seven numbers: its
+    // material, whatever the numbers above say.
+    std::optional<MaterialKind> keywordMaterial;
+    // GGX roughness alpha of a microfacet finish (0 < alpha <= 1).
+    float roughness = 0.0f;
+    // A rough conductor's complex index of refraction; absent, Schlick's Fresnel with the
+    // pigment as the reflectance at normal incidence (as the mirror has).
+    std::optional<ComplexIor> conductorIor;
+
+    // A keyword finish's material; otherwise the format's selection order: kt > 0, else
+    // kr > 0, else alpha > 0, else Lambertian.
     MaterialKind material() const;
     bool isEmissive() const;
 };

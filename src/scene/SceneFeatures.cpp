@@ -49,10 +49,13 @@ SceneFeatures analyseFeatures(const Scene& scene)
         shapes.visit(object.shape);
         const Finish& finish = scene.finishes[object.finish];
         features.materials.insert(finish.material());
+        if (describe(finish.material()).model == Model::Microfacet)
+            features.microfacets = true;
         if (finish.material() == MaterialKind::Dielectric && finish.ior == 1.0f)
             features.nullInterfaces = true;
         features.pigments.insert(scene.pigments[object.pigment].kind);
     }
+    features.thinLens = scene.camera.lens.has_value();
     features.pointLights = !scene.pointLights.empty();
     features.sphereLights = !sphereLights(scene).empty();
     features.environment = scene.environment.kind;
@@ -66,6 +69,10 @@ SceneFeatures SceneFeatures::everything(const Scene& scene)
     features.transforms = true;
     for (const MaterialDescription& material : materialDescriptions())
         features.materials.insert(material.kind);
+    features.microfacets = true;
+    // The camera is the scene's, as the environment is: a pinhole's rays are not a thin
+    // lens's of radius 0 bit for bit, nor is its march from the eye the same.
+    features.thinLens = scene.camera.lens.has_value();
     for (const PigmentDescription& pigment : pigmentDescriptions())
         features.pigments.insert(pigment.kind);
     features.nullInterfaces = true;
@@ -90,6 +97,7 @@ std::string SceneFeatures::describe() const
     text << "pigments:      " << join(pigments) << "\n";
     if (nullInterfaces)
         text << "index-1 dielectrics: yes (transparent to shadow rays)\n";
+    text << "camera:        " << (thinLens ? "thin lens" : "pinhole") << "\n";
     std::string lights;
     if (pointLights)
         lights += "point";

@@ -21,6 +21,12 @@ struct SceneFeatures {
     // Dielectrics of index exactly 1: light passes them unbent (see lights.glsl).
     bool nullInterfaces = false;
 
+    // A microfacet material (scene/Materials.h, Model::Microfacet): the GGX code they share.
+    bool microfacets = false;
+
+    // The camera's thin lens (depth of field); a pinhole without.
+    bool thinLens = false;
+
     bool pointLights = false;
     bool sphereLights = false;
     EnvironmentKind environment = EnvironmentKind::Sky;

@@ -122,6 +122,18 @@ private:
         if (!(camera.verticalFieldOfViewDegrees > 0.0f &&
               camera.verticalFieldOfViewDegrees < 180.0f))
             failAtMark(fovToken, "a vertical field of view strictly between 0 and 180 degrees");
+
+        // The thin lens (extension): `lens APERTURE_RADIUS FOCUS_DISTANCE`. A classic file has
+        // the point light count here, never a word.
+        if (const Token* token = peek(); token != nullptr && token->text == "lens") {
+            skip();
+            ThinLens lens;
+            lens.apertureRadius = numberAtLeast("lens aperture radius", 0.0f);
+            lens.focusDistance = positiveNumber("lens focus distance");
+            // A radius of 0 is the pinhole.
+            if (lens.apertureRadius > 0.0f)
+                camera.lens = lens;
+        }
     }
 
     void parsePointLights(Scene& scene)
@@ -165,7 +177,19 @@ private:
                                       std::to_string(i + 1) + " of " +
                                       std::to_string(finishes) + ")";
             Finish finish;
-            finish.emission = colour(which + " emitted radiance");
+            // A finish written with its material's keyword (extension); a classic one starts
+            // with a number.
+            if (const Token* token = peek()) {
+                if (const MaterialDescription* kind = findFinishKeyword(token->text)) {
+                    skip();
+                    finish.keywordMaterial = kind->kind;
+                    kind->read(*this, which, finish);
+                    scene.finishes.push_back(finish);
+                    continue;
+                }
+            }
+            finish.emission = colour(which + " emitted radiance, or a finish keyword: " +
+                                     finishKeywords());
             finish.phongExponent = numberAtLeast(which + " Blinn-Phong exponent", 0.0f);
             finish.reflection = number(which + " kr");
             finish.transmission = number(which + " kt");

@@ -1,5 +1,6 @@
 #pragma once
-// The settings that take one of a few named values (--sampler, --fresnel, the shader variant),
+// The settings that take one of a few named values (--sampler, --fresnel, --masking, --kernel,
+// the shader variant),
 // each with its names, its codes and what each value means, in one place. The command line,
 // the files' metadata and --help read the names from here, and the shader receives the codes
 // as generated #defines (PREFIX_NAME, settings/SettingsTable.h writes them): no code is
@@ -24,6 +25,24 @@ enum class ShaderVariant {
 
 // The dielectric's reflectance (shaders/modules/fresnel.glsl).
 enum class FresnelModel { Schlick, Exact };
+
+// Smith's masking-shadowing of the microfacet materials (shaders/modules/microfacet.glsl):
+// height-correlated (Heitz 2014, the default) or the separable product G1(wo) G1(wi), which
+// renderers such as Mitsuba 3 use; the second only to compare with them.
+enum class MaskingModel { HeightCorrelated, Separable };
+
+// Which GPU kernel drives the path tracer (--kernel): both run the same per-pixel code
+// (shaders/modules/path_tracer_main.glsl), so they give a pixel the same samples; they differ
+// in how the GPU is asked to run it, and so in speed, device by device. Which one Automatic
+// stands for on a renderer is render/KernelChoice.h's decision.
+enum class PathKernel {
+    // The kernel measured faster on the renderer at hand (render::automaticKernel).
+    Automatic,
+    // A full-screen triangle's fragments (OpenGL 3.3): fragment_kernel.glsl.
+    Fragment,
+    // A compute dispatch (OpenGL 4.3): compute_kernel.glsl.
+    Compute,
+};
 
 // Where a path's random decisions come from (shaders/modules/sampler.glsl): every one from
 // the sample's own random stream, or the first bounces' from Owen-scrambled Sobol points.
@@ -72,6 +91,26 @@ struct Choices<SamplerKind> {
     }};
 };
 
+template <>
+struct Choices<MaskingModel> {
+    static constexpr const char* glslPrefix = "MASKING_";
+    static constexpr std::array<Choice<MaskingModel>, 2> values = {{
+        {MaskingModel::HeightCorrelated, "correlated", "height-correlated Smith"},
+        {MaskingModel::Separable, "separable", "G1 G1, as Mitsuba 3 has it"},
+    }};
+};
+
+template <>
+struct Choices<PathKernel> {
+    static constexpr const char* glslPrefix = nullptr;  // it picks the kernel, never read
+    static constexpr std::array<Choice<PathKernel>, 3> values = {{
+        {PathKernel::Automatic, "auto",
+         "the one measured faster on this renderer (--features says which and why)"},
+        {PathKernel::Fragment, "fragment", "a full-screen triangle"},
+        {PathKernel::Compute, "compute", "OpenGL 4.3"},
+    }};
+};
+
 // The code the shader sees for `value`.
 template <typename Enum>
 constexpr int choiceCode(Enum value)
@@ -89,7 +128,8 @@ constexpr bool listedInCodeOrder()
     return true;
 }
 static_assert(listedInCodeOrder<ShaderVariant>() && listedInCodeOrder<FresnelModel>() &&
-                  listedInCodeOrder<SamplerKind>(),
+                  listedInCodeOrder<SamplerKind>() && listedInCodeOrder<MaskingModel>() &&
+                  listedInCodeOrder<PathKernel>(),
               "each choice list names every value in the order of its codes");
 
 }  // namespace settings

@@ -107,6 +107,12 @@ OptionDescription& OptionDescription::alias(std::string spelling)
     return *this;
 }
 
+OptionDescription& OptionDescription::readBy(std::function<std::any(const std::string&)> reader)
+{
+    this->reader = std::move(reader);
+    return *this;
+}
+
 OptionDescription& OptionDescription::defaultShown(std::string text)
 {
     defaultText = std::move(text);
@@ -126,9 +132,10 @@ OptionDescription& OptionDescription::metadata(std::string key, std::string labe
     return *this;
 }
 
-OptionDescription& OptionDescription::uniform(std::string module)
+OptionDescription& OptionDescription::uniform(std::string module, std::string guard)
 {
     uniformModule = std::move(module);
+    uniformGuard = std::move(guard);
     return *this;
 }
 

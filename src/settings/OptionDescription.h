@@ -9,6 +9,7 @@
 //         .metadata("maxSteps", "sphere-tracing step limit")
 //         .uniform("sphere_tracing.glsl")
 #include <any>
+#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -56,6 +57,10 @@ public:
         switchValue = std::move(value);
         return *this;
     }
+    // The command line's value is read by `reader` (the text to a value of the field's type,
+    // in a std::any; it throws UsageError for text it does not accept) instead of by the
+    // field's type: for a type settings/OptionValues.h cannot read (one of another layer's).
+    OptionDescription& readBy(std::function<std::any(const std::string& text)> reader);
     // --help states this instead of the field's default (a default the program chooses).
     OptionDescription& defaultShown(std::string text);
     OptionDescription& noDefaultShown();
@@ -63,8 +68,10 @@ public:
     // changes the image, so that renders that differ in it are never merged or resumed.
     OptionDescription& metadata(std::string key, std::string label);
     // The shader reads it as a uniform (u + the field's name, capitalised), declared with
-    // its per-pixel copy in the generated preamble when `module` is part of the shader.
-    OptionDescription& uniform(std::string module);
+    // its per-pixel copy in the generated preamble when `module` is part of the shader;
+    // inside `#if guard` where a guard is given (a feature's define, HAS_MICROFACET), so that
+    // a shader without the feature declares none of it.
+    OptionDescription& uniform(std::string module, std::string guard = "");
 
     // A command-line option that takes no value.
     bool isSwitch() const { return !flag.empty() && valueName.empty(); }
@@ -75,12 +82,14 @@ public:
     std::string help;                  // "{default}" marks where the default goes
     Range range;                       // for numbers
     std::any switchValue;
+    std::function<std::any(const std::string&)> reader;  // null: by the field's type
     std::string defaultText;           // "" : the field's default; see showDefault
     bool showDefault = true;
     std::string metadataKey;           // empty: not recorded
     std::string metadataLabel;
     std::string setBy;                 // what sets a setting that has no flag
     std::string uniformModule;         // empty: no uniform
+    std::string uniformGuard;          // empty: declared wherever the module is
 };
 
 // An option that takes a value, named `valueName` in --help.

@@ -69,6 +69,16 @@ BoundOption<Owner> bindOption(std::string field, Access access, OptionDescriptio
             throw wrong(".sets(value) must give a value of the field's type");
         }
         row.apply = [access, value](Owner& owner, const std::string&) { access(owner) = value; };
+    } else if (description.reader) {
+        row.apply = [access, reader = description.reader, field](Owner& owner,
+                                                                 const std::string& text) {
+            try {
+                access(owner) = std::any_cast<T>(reader(text));
+            } catch (const std::bad_any_cast&) {
+                throw std::logic_error("option table row " + field +
+                                       ": .readBy must give a value of the field's type");
+            }
+        };
     } else if (!description.flag.empty()) {
         if constexpr (isParseable<T>())
             row.apply = [access, range = description.range, flag = description.flag](

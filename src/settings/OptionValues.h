@@ -20,7 +20,7 @@ namespace settings {
 // A value the shader is given as a uniform (not an array): a setting's, or one of the scene's
 // (render/SceneUniforms.h).
 using UniformValue =
-    std::variant<int, unsigned int, float, bool, glm::vec2, glm::vec3, glm::uvec2>;
+    std::variant<int, unsigned int, float, bool, glm::vec2, glm::vec3, glm::uvec2, glm::ivec4>;
 
 // The GLSL type of a uniform holding a T.
 template <typename T>
@@ -40,6 +40,8 @@ constexpr const char* glslTypeOf()
         return "vec3";
     else if constexpr (std::is_same_v<T, glm::uvec2>)
         return "uvec2";
+    else if constexpr (std::is_same_v<T, glm::ivec4>)
+        return "ivec4";
     else
         static_assert(sizeof(T) == 0, "no uniform of this type");
 }

@@ -1,6 +1,7 @@
 #include "shadergen/ExactSceneIntersection.h"
 
 #include "scene/PrimitiveKinds.h"
+#include "shadergen/ExactCsgIntersection.h"
 #include "shadergen/ShapeCompiler.h"
 
 #include <functional>
@@ -27,7 +28,10 @@ std::string shapeName(const Geometry& geometry)
     if (std::holds_alternative<UserSdf>(geometry))
         return "the user SDF '" + std::get<UserSdf>(geometry).name +
                "', whose file declares no // @intersect function";
-    return "a CSG solid";
+    if (std::holds_alternative<CsgNode>(geometry))
+        return "a CSG solid with a smoothed operator, or a leaf that is a disk or none of these "
+               "shapes";
+    return "a rounded box";
 }
 
 // "sphere, polyhedron, ... primitives": the kinds met exactly, for messages.
@@ -135,20 +139,28 @@ std::string generateExactSceneIntersection(const Scene& scene,
         shapeParameters.insert(shapeParameters.end(), values.begin(), values.end());
         return first;
     };
+    std::string functions;
     std::string body;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
-        const std::optional<std::string> statements =
-            exactIntersectionStatements(object.shape, i, allocate);
-        if (!statements)
+        if (std::optional<std::string> statements =
+                exactIntersectionStatements(object.shape, i, allocate)) {
+            body += *statements;
+        } else if (std::optional<ExactCsgCode> csg =
+                       exactCsgIntersection(object.shape, i, shapeParameters)) {
+            functions += csg->functions;
+            body += csg->statements;
+        } else {
             throw std::runtime_error(
                 scene.sourcePath.string() + ":" + std::to_string(object.line) +
                 ": --exact-geometry intersects the primitives " + kindsMetExactly() +
-                " and user SDFs with an // @intersect function exactly; this object is " +
+                ", user SDFs with an // @intersect function, and union, intersection and "
+                "difference blocks of these (disks excepted) exactly; this object is " +
                 shapeName(object.shape.geometry) + ", which has no exact intersection here");
-        body += *statements;
+        }
     }
-    return "// Every object's first crossing in (tMin, hit.t), exactly (exact_shapes.glsl).\n"
+    return functions +
+           "// Every object's first crossing in (tMin, hit.t), exactly (exact_shapes.glsl).\n"
            "void exactSceneIntersect(vec3 origin, vec3 direction, float tMin, "
            "inout ExactHit hit)\n{\n" +
            body + "}\n";

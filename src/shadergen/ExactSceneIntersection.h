@@ -30,8 +30,9 @@ std::optional<std::string> exactIntersectionStatements(const scene::Shape& shape
 // The GLSL of exactSceneIntersect for --exact-geometry (shaders/modules/ray_queries_exact.glsl):
 // every object's first crossing in closed form, through the functions of
 // shaders/modules/exact_shapes.glsl, with the numbers appended to `shapeParameters`.
-// Every shape exactIntersectionStatements meets has one; a scene with any other shape is
-// refused with a message naming its file, line and shape.
+// Every shape exactIntersectionStatements meets has one, and so has every sharp CSG block of
+// such shapes (shadergen/ExactCsgIntersection.h); a scene with any other shape is refused
+// with a message naming its file, line and shape.
 std::string generateExactSceneIntersection(const scene::Scene& scene,
                                            std::vector<glm::vec4>& shapeParameters);
 

@@ -43,7 +43,22 @@ const RecordLayout<FinishRecord>& finishRecordLayout()
             {&FinishRecord::phongExponent, 0, "w", "finishPhongExponent", ""},
             {&FinishRecord::material, 1, "x", "finishMaterial", ""},
             {&FinishRecord::ior, 1, "y", "finishIor", ""},
+            {&FinishRecord::roughness, 1, "z", "finishRoughness", "GGX roughness alpha"},
         }};
+    return layout;
+}
+
+const RecordLayout<ConductorRecord>& conductorRecordLayout()
+{
+    static const RecordLayout<ConductorRecord> layout = {
+        "uFinishConductors", "finish", "FINISH_ARRAY_SIZE", "CONDUCTOR_RECORD", 2, false,
+        {
+            {&ConductorRecord::eta, 0, "rgb", "finishConductorEta", ""},
+            {&ConductorRecord::hasComplexIor, 0, "w", "finishHasComplexIor",
+             "eta + i k below; false: Schlick's Fresnel with the pigment as R0"},
+            {&ConductorRecord::k, 1, "rgb", "finishConductorK", ""},
+        },
+        "HAS_ROUGH_CONDUCTOR"};
     return layout;
 }
 
@@ -114,7 +129,8 @@ const char* glslTypeOf(const RecordMember<Record>& member)
     case 0: return "float";
     case 1: return "int";
     case 2: return "uint";
-    default: return "vec3";
+    case 3: return "vec3";
+    default: return "bool";
     }
 }
 
@@ -128,6 +144,7 @@ RecordGlsl glslOf(const RecordLayout<Record>& layout)
     text.macro = layout.macro;
     text.parts = layout.parts;
     text.element = layout.integer ? "ivec4" : "vec4";
+    text.guard = layout.guard ? layout.guard : "";
     for (const RecordField<Record>& field : layout.fields)
         text.fields.push_back(
             {glslTypeOf(field.member), field.accessor, field.part, field.components, field.comment});
@@ -153,13 +170,16 @@ template void packRecord(const RecordLayout<PigmentRecord>&, const PigmentRecord
                          std::vector<glm::vec4>&);
 template void packRecord(const RecordLayout<FinishRecord>&, const FinishRecord&,
                          std::vector<glm::vec4>&);
+template void packRecord(const RecordLayout<ConductorRecord>&, const ConductorRecord&,
+                         std::vector<glm::vec4>&);
 template void packRecord(const RecordLayout<LightRecord>&, const LightRecord&,
                          std::vector<glm::vec4>&);
 
 std::vector<RecordGlsl> recordLayoutsForGlsl()
 {
     return {glslOf(objectRecordLayout()), glslOf(pigmentRecordLayout()),
-            glslOf(finishRecordLayout()), glslOf(lightRecordLayout())};
+            glslOf(finishRecordLayout()), glslOf(conductorRecordLayout()),
+            glslOf(lightRecordLayout())};
 }
 
 }  // namespace shadergen

@@ -40,6 +40,16 @@ struct FinishRecord {
     float phongExponent = 0.0f;
     int material = 0;
     float ior = 1.0f;
+    float roughness = 0.0f;  // GGX roughness alpha
+};
+
+// Per finish, in shaders of scenes with a rough conductor (HAS_ROUGH_CONDUCTOR): its complex
+// index of refraction eta + i k, where it has one; without, its Fresnel is Schlick's with the
+// pigment as R0.
+struct ConductorRecord {
+    glm::vec3 eta{0.0f};
+    bool hasComplexIor = false;
+    glm::vec3 k{0.0f};
 };
 
 // Per light. Lights are chosen in proportion to their emitted power.
@@ -55,7 +65,8 @@ struct LightRecord {
 
 template <typename Record>
 using RecordMember =
-    std::variant<float Record::*, int Record::*, std::uint32_t Record::*, glm::vec3 Record::*>;
+    std::variant<float Record::*, int Record::*, std::uint32_t Record::*, glm::vec3 Record::*,
+                 bool Record::*>;
 
 template <typename Record>
 struct RecordField {
@@ -76,11 +87,13 @@ struct RecordLayout {
     int parts;                // vec4s per record
     bool integer;             // ivec4s (every field an int) rather than vec4s
     std::vector<RecordField<Record>> fields;
+    const char* guard = nullptr;  // a define the table is declared under; nullptr: none
 };
 
 const RecordLayout<ObjectRecord>& objectRecordLayout();
 const RecordLayout<PigmentRecord>& pigmentRecordLayout();
 const RecordLayout<FinishRecord>& finishRecordLayout();
+const RecordLayout<ConductorRecord>& conductorRecordLayout();
 const RecordLayout<LightRecord>& lightRecordLayout();
 
 // Appends `record`, laid out by `layout`, to the uniform array `out` (a slot no field takes
@@ -99,6 +112,7 @@ struct RecordGlsl {
     std::string macro;
     int parts = 1;
     std::string element;  // "vec4" or "ivec4"
+    std::string guard;    // empty: none
     struct Field {
         std::string glslType;
         std::string accessor;

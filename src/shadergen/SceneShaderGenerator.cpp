@@ -96,7 +96,9 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
     for (const MaterialDescription& material : materialDescriptions())
         if (material.featureSwitch != nullptr)
             define(out, material.featureSwitch, f.has(material.kind) ? 1 : 0);
+    define(out, "HAS_MICROFACET", f.microfacets ? 1 : 0);
     define(out, "HAS_NULL_INTERFACES", f.nullInterfaces ? 1 : 0);
+    define(out, "HAS_THIN_LENS", f.thinLens ? 1 : 0);
     for (const PigmentDescription& pigment : pigmentDescriptions())
         if (pigment.featureSwitch != nullptr)
             define(out, pigment.featureSwitch, f.has(pigment.kind) ? 1 : 0);

@@ -4,6 +4,7 @@
 #include "scene/PrimitiveKinds.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace shadergen {
 
@@ -34,8 +35,9 @@ std::string parameterSlot(int index)
     return "SHAPE_PARAMETERS[" + std::to_string(index) + "]";
 }
 
-ShapeCompiler::ShapeCompiler(std::vector<glm::vec4>& parameters, std::vector<glm::ivec4>& program)
-    : parameters_(parameters), program_(program)
+ShapeCompiler::ShapeCompiler(std::vector<glm::vec4>& parameters, std::vector<glm::ivec4>& program,
+                             std::string functionPrefix)
+    : parameters_(parameters), program_(program), functionPrefix_(std::move(functionPrefix))
 {
 }
 
@@ -46,7 +48,7 @@ void ShapeCompiler::beginObject(std::size_t index, const std::string& source, in
 
 std::string ShapeCompiler::newFunctionName()
 {
-    return "shape" + std::to_string(nextFunction_++);
+    return functionPrefix_ + std::to_string(nextFunction_++);
 }
 
 void ShapeCompiler::writeFunction(const std::string& name, const std::string& what,

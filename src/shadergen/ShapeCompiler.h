@@ -19,8 +19,11 @@ std::string parameterSlot(int index);
 
 class ShapeCompiler {
 public:
-    // Values are appended to `parameters`, instructions to `program`.
-    ShapeCompiler(std::vector<glm::vec4>& parameters, std::vector<glm::ivec4>& program);
+    // Values are appended to `parameters`, instructions to `program`. Generated functions are
+    // named `functionPrefix` and a number (two compilers whose functions share one shader need
+    // different prefixes).
+    ShapeCompiler(std::vector<glm::vec4>& parameters, std::vector<glm::ivec4>& program,
+                  std::string functionPrefix = "shape");
 
     // --- specialised: one GLSL function per shape node --------------------------------------
 
@@ -71,6 +74,7 @@ private:
     std::vector<glm::vec4>& parameters_;
     std::vector<glm::ivec4>& program_;
     std::ostringstream functions_;
+    std::string functionPrefix_;
     std::string objectLabel_;
     int nextFunction_ = 0;
     int maxDepth_ = 1;

@@ -15,7 +15,8 @@ std::vector<UniformDeclaration> settingUniformDeclarations()
         if (row.isUniform())
             declarations.push_back({row.glslType, settings::uniformName(row.field),
                                     settings::perPixelCopyName(row.field),
-                                    row.description.uniformModule});
+                                    row.description.uniformModule,
+                                    row.description.uniformGuard});
     return declarations;
 }
 
@@ -25,6 +26,17 @@ namespace {
 std::string copyOf(const std::string& uniform)
 {
     return "g" + uniform.substr(1);
+}
+
+// `#if guard` before what `write` writes and `#endif` after it, where there is a guard.
+template <typename Write>
+void guarded(std::ostringstream& out, const std::string& guard, Write write)
+{
+    if (!guard.empty())
+        out << "#if " << guard << "\n";
+    write();
+    if (!guard.empty())
+        out << "#endif\n";
 }
 
 void declareRecords(std::ostringstream& out, const RecordGlsl& record)
@@ -72,9 +84,10 @@ void writeAccessors(std::ostringstream& out, const RecordGlsl& record)
             out << "// " << field.accessor << ": " << field.comment << "\n";
         const std::string slot = record.macro + "(" + record.indexName + ", " +
                                  std::to_string(field.part) + ")." + field.components;
-        // A float array holds integers as floats.
+        // A float array holds integers as floats, and a flag as 1 or 0.
         const bool converted = record.element == "vec4" &&
-                               (field.glslType == "int" || field.glslType == "uint");
+                               (field.glslType == "int" || field.glslType == "uint" ||
+                                field.glslType == "bool");
         out << field.glslType << " " << field.accessor << "(int " << record.indexName
             << ") { return " << (converted ? field.glslType + "(" + slot + ")" : slot)
             << "; }\n";
@@ -97,11 +110,14 @@ std::string uniformBlock(const std::vector<UniformDeclaration>& scalars,
            "// gX): shadergen/UniformBlock.h says why. Generated from their descriptions:\n"
            "// settings/Options.def, render/SceneUniforms.cpp, shadergen/SceneRecords.cpp.\n\n";
     for (const UniformDeclaration* scalar : used)
-        out << "uniform " << scalar->glslType << " " << scalar->name << ";  // "
-            << scalar->module << "\n";
+        guarded(out, scalar->guard, [&] {
+            out << "uniform " << scalar->glslType << " " << scalar->name << ";  // "
+                << scalar->module << "\n";
+        });
     out << "\n";
     for (const UniformDeclaration* scalar : used)
-        out << scalar->glslType << " " << scalar->copy << ";\n";
+        guarded(out, scalar->guard,
+                [&] { out << scalar->glslType << " " << scalar->copy << ";\n"; });
 
     out << "\n// Shape parameters: one or more vec4 per primitive or transform, addressed by slot.\n"
            "uniform vec4 uShapeParameters[SHAPE_PARAMETER_ARRAY_SIZE];\n"
@@ -112,7 +128,7 @@ std::string uniformBlock(const std::vector<UniformDeclaration>& scalars,
            "#define SHAPE_PARAMETERS uShapeParameters\n"
            "#endif\n";
     for (const RecordGlsl& record : records)
-        declareRecords(out, record);
+        guarded(out, record.guard, [&] { declareRecords(out, record); });
 
     out << "\nvoid readUniformsOnce()\n{\n"
            "#if SHAPE_PARAMETERS_READ_ONCE\n"
@@ -120,14 +136,15 @@ std::string uniformBlock(const std::vector<UniformDeclaration>& scalars,
            "        gShapeParameters[i] = uShapeParameters[i];\n"
            "#endif\n";
     for (const RecordGlsl& record : records)
-        readRecordsOnce(out, record);
+        guarded(out, record.guard, [&] { readRecordsOnce(out, record); });
     for (const UniformDeclaration* scalar : used)
-        out << "    " << scalar->copy << " = " << scalar->name << ";\n";
+        guarded(out, scalar->guard,
+                [&] { out << "    " << scalar->copy << " = " << scalar->name << ";\n"; });
     out << "}\n";
 
     out << "\n// --- accessors: where object, pigment, finish and light records are decoded\n";
     for (const RecordGlsl& record : records)
-        writeAccessors(out, record);
+        guarded(out, record.guard, [&] { writeAccessors(out, record); });
     return out.str();
 }
 

@@ -27,6 +27,7 @@ struct UniformDeclaration {
     std::string name;      // "uHitTolerance"
     std::string copy;      // "gHitTolerance"
     std::string module;    // the module that reads it: declared where that module is used
+    std::string guard = "";  // a define it is declared under (#if guard); empty: none
 };
 
 // The settings the shader reads (settings/Options.def's rows with .uniform).

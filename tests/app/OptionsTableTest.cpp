@@ -167,7 +167,7 @@ std::vector<AssembledShader> assembledShaders()
         const shadergen::ShaderSource source =
             render::prepareScene(scene::parseSceneFile(kSourceDirectory / "scenes" / scene), build,
                                  render::defaultShaderDirectory())
-                .fragmentSource;
+                .pathTracerSource;
         const std::string text = source.text();
         const std::size_t begin = text.find("void readUniformsOnce()");
         const std::size_t end = text.find("\n#line", begin);

@@ -3,6 +3,7 @@
 #include "app/ProgramInFolder.h"
 #include "io/ImageFile.h"
 #include "support/ChildProcess.h"
+#include "support/SmallDisk.h"
 #include "support/TestPaths.h"
 
 #include <gtest/gtest.h>
@@ -10,7 +11,10 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <memory>
 #include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace cli_tests {
 namespace {
@@ -226,6 +230,132 @@ TEST_F(Outputs, ATimedRenderTooShortForOneSampleWritesNothingAndSaysSo)
     EXPECT_EQ(filesInFolder(), std::vector<std::string>{"out.png"});
     EXPECT_NE(result.standardError.find("nothing written"), std::string::npos)
         << describe(result);
+}
+
+// --- a full disk loses nothing ----------------------------------------------------------
+
+// Renders onto a 64 KB tmpfs mounted in the test's folder as disk/, filled but for one page.
+class FullDisk : public Outputs, public ::testing::WithParamInterface<std::string> {
+protected:
+    void SetUp() override
+    {
+        Outputs::SetUp();
+        disk_ = std::make_unique<SmallDisk>(folder_ / "disk", "64k");
+        if (!disk_->mounted())
+            GTEST_SKIP() << disk_->whyNotMounted();
+    }
+    void TearDown() override
+    {
+        disk_.reset();
+        Outputs::TearDown();
+    }
+
+    // Exit status 1, one line on standard error naming the user's path and the system's
+    // reason, the older file as it was and nothing else on the disk.
+    void expectRefusedKeepingTheOlderFile(const ProcessResult& result,
+                                          const std::vector<std::string>& paths) const
+    {
+        ASSERT_TRUE(result.exited) << describe(result);
+        EXPECT_EQ(result.exitStatus, 1) << describe(result);
+        const auto lines = nonEmptyLines(result.standardError);
+        ASSERT_EQ(lines.size(), 1u) << describe(result);
+        EXPECT_EQ(lines[0].rfind("raytracer: cannot write disk/", 0), 0u) << lines[0];
+        EXPECT_NE(lines[0].find(std::strerror(ENOSPC)), std::string::npos) << lines[0];
+        std::vector<std::string> onDisk = {"filler"};
+        for (const std::string& path : paths) {
+            EXPECT_EQ(contents("disk/" + path), "an earlier render")
+                << "disk/" << path << " must be kept as it was";
+            onDisk.push_back(path);
+        }
+        std::sort(onDisk.begin(), onDisk.end());
+        std::vector<std::string> found;
+        for (const auto& entry : fs::directory_iterator(folder_ / "disk"))
+            found.push_back(entry.path().filename().string());
+        std::sort(found.begin(), found.end());
+        EXPECT_EQ(found, onDisk) << "no temporary file may be left";
+    }
+
+    std::unique_ptr<SmallDisk> disk_;
+};
+
+TEST_P(FullDisk, ARenderThatDoesNotFitSaysSoAndKeepsTheOlderFile)
+{
+    // PNG and TIFF were renamed over the older file cut short, with exit status 0; JPEG's
+    // library ended the process, leaving its temporary file.
+    const std::string name = "out" + GetParam();
+    write("disk/" + name, "an earlier render");
+    ASSERT_TRUE(disk_->fillLeaving(4096));
+    // 160x30: more than a page in each format, and one strip of TIFF, written as it closes.
+    const ProcessResult result =
+        run({scene1(), "160", "30", "--spp", "1", "--quiet", "--output", "disk/" + name});
+    expectRefusedKeepingTheOlderFile(result, {name});
+}
+
+INSTANTIATE_TEST_SUITE_P(PictureFormats, FullDisk, ::testing::Values(".png", ".jpg", ".tif"),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                             return info.param.substr(1);
+                         });
+
+TEST_F(Outputs, AMergeWhosePictureDoesNotFitWritesNeitherFile)
+{
+    // The EXR fitted and the PNG did not: the PNG was renamed over the older one, 0 bytes
+    // long, with exit status 0.
+    SmallDisk disk(folder_ / "disk", "256k");
+    if (!disk.mounted())
+        GTEST_SKIP() << disk.whyNotMounted();
+    for (const char* seed : {"1", "2"}) {
+        const ProcessResult rendered = run({scene1(), "48", "36", "--spp", "1", "--seed", seed,
+                                            "--quiet", "--output", std::string(seed) + ".exr"});
+        ASSERT_TRUE(rendered.exited && rendered.exitStatus == 0) << describe(rendered);
+    }
+    // The sizes of the two files, from the same merge where there is room.
+    const ProcessResult measured = run({"merge", "m.exr", "1.exr", "2.exr", "--png", "m.png"});
+    ASSERT_TRUE(measured.exited && measured.exitStatus == 0) << describe(measured);
+    const std::uintmax_t exrPages = (fs::file_size(folder_ / "m.exr") + 4095) / 4096;
+    ASSERT_GT(fs::file_size(folder_ / "m.png"), 4096u) << "the PNG must need more than a page";
+    write("disk/m.png", "an earlier render");
+    ASSERT_TRUE(disk.fillLeaving(exrPages * 4096));  // room for the EXR, none for the PNG
+    const ProcessResult result =
+        run({"merge", "disk/m.exr", "1.exr", "2.exr", "--png", "disk/m.png"});
+    ASSERT_TRUE(result.exited) << describe(result);
+    EXPECT_EQ(result.exitStatus, 1) << describe(result);
+    EXPECT_NE(result.standardError.find("cannot write disk/m.png: " +
+                                        std::string(std::strerror(ENOSPC))),
+              std::string::npos)
+        << describe(result);
+    EXPECT_EQ(contents("disk/m.png"), "an earlier render");
+    std::vector<std::string> onDisk;
+    for (const auto& entry : fs::directory_iterator(folder_ / "disk"))
+        onDisk.push_back(entry.path().filename().string());
+    std::sort(onDisk.begin(), onDisk.end());
+    EXPECT_EQ(onDisk, (std::vector<std::string>{"filler", "m.png"}))
+        << "neither file written, no temporary file left";
+}
+
+// --- temporary files a killed render left -----------------------------------------------
+
+TEST_F(Outputs, ARenderRemovesTheTemporaryFilesOfItsOutputThatAnEndedProcessLeftAndSaysSo)
+{
+    const pid_t ended = ::fork();
+    if (ended == 0)
+        ::_exit(0);
+    ::waitpid(ended, nullptr, 0);
+    char host[256] = {};
+    ::gethostname(host, sizeof host - 1);
+    const std::string left = ".out.partial-" + std::string(host) + "-" + std::to_string(ended) +
+                             "-0.exr";
+    write(left, std::string(100000, 'x'));
+    write("other.exr", "another render's");
+    const ProcessResult result =
+        run({scene1(), "8", "6", "--spp", "1", "--quiet", "--output", "out.exr"});
+    ASSERT_TRUE(result.exited && result.exitStatus == 0) << describe(result);
+    const auto lines = nonEmptyLines(result.standardOutput);
+    ASSERT_GE(lines.size(), 2u) << describe(result);
+    EXPECT_NE(lines[0].find("removed ./" + left + ", a temporary file left by process " +
+                            std::to_string(ended) + ", which no longer runs"),
+              std::string::npos)
+        << lines[0];
+    EXPECT_EQ(filesInFolder(), (std::vector<std::string>{"other.exr", "out.exr"}));
 }
 
 }  // namespace

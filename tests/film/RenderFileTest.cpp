@@ -29,13 +29,18 @@ protected:
         film::Accumulation accumulation(5, 3);
         std::mt19937 random(5);
         std::uniform_real_distribution<float> uniform(0.0f, 3.0f);
-        for (float& value : accumulation.estimate.pixels)
-            value = uniform(random);
-        for (float& value : accumulation.moments.pixels)
-            value = uniform(random);
         for (int y = 0; y < 3; ++y)
             for (int x = 0; x < 5; ++x) {
-                accumulation.estimate.at(x, y, 3) = static_cast<float>(16 + x);
+                const float kept = static_cast<float>(16 + x);
+                for (int c = 0; c < 3; ++c) {
+                    // A second moment that samples of this mean could have: below n (n - 1)
+                    // mean^2 (film/RenderFileChecks.h).
+                    const float mean = uniform(random);
+                    accumulation.estimate.at(x, y, c) = mean;
+                    accumulation.moments.at(x, y, c) =
+                        uniform(random) / 3.0f * kept * (kept - 1.0f) * mean * mean;
+                }
+                accumulation.estimate.at(x, y, 3) = kept;
                 accumulation.moments.at(x, y, 3) = static_cast<float>(y);
             }
         return accumulation;
@@ -47,8 +52,8 @@ protected:
         metadata.height = 3;
         metadata.sceneFile = "s.in";
         metadata.sceneSha256 = std::string(64, 'c');
-        metadata.samplesPerPixel = 16;
-        metadata.sampleRanges = {{3, 0, 16}};
+        metadata.samplesPerPixel = 24;
+        metadata.sampleRanges = {{3, 0, 24}};
         metadata.renderSeconds = 2.5;
         metadata.program = "raytracer 1.0.0";
         metadata.settings.maxBounces = 5;

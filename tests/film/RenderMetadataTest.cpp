@@ -23,6 +23,10 @@ film::RenderMetadata someRender()
     metadata.samplesPerPixel = 96;
     metadata.sampleRanges = {{11, 0, 32}, {12, 0, 64}};
     metadata.renderSeconds = 12.25;
+    metadata.glContext = "EGL device 0 (GPU, /dev/dri/renderD128)";
+    metadata.glRenderer = "NVIDIA H200/PCIe/SSE2";
+    metadata.glVersion = "4.6.0 NVIDIA 550.90.07";
+    metadata.kernel = "compute";
     metadata.program = "raytracer 1.0.0";
     metadata.gitCommit = "0123456789abcdef0123456789abcdef01234567";
     return metadata;
@@ -38,6 +42,10 @@ void expectSameMetadata(const film::RenderMetadata& read, const film::RenderMeta
     EXPECT_EQ(read.sampleRanges, written.sampleRanges);
     EXPECT_DOUBLE_EQ(read.renderSeconds, written.renderSeconds);
     EXPECT_EQ(read.interrupted, written.interrupted);
+    EXPECT_EQ(read.glContext, written.glContext);
+    EXPECT_EQ(read.glRenderer, written.glRenderer);
+    EXPECT_EQ(read.glVersion, written.glVersion);
+    EXPECT_EQ(read.kernel, written.kernel);
     EXPECT_EQ(read.program, written.program);
     EXPECT_EQ(read.gitCommit, written.gitCommit);
     EXPECT_EQ(read.mergedFrom, written.mergedFrom);
@@ -61,6 +69,8 @@ settingChanges()
             {"--rr-depth", [](settings::RenderSettings& s) { s.russianRouletteDepth = 2; }},
             {"--no-mis", [](settings::RenderSettings& s) { s.multipleImportanceSampling = false; }},
             {"--fresnel", [](settings::RenderSettings& s) { s.dielectricFresnel = settings::FresnelModel::Exact; }},
+            {"--no-energy-compensation", [](settings::RenderSettings& s) { s.energyCompensation = false; }},
+            {"--masking", [](settings::RenderSettings& s) { s.masking = settings::MaskingModel::Separable; }},
             {"--sampler", [](settings::RenderSettings& s) { s.sampler = settings::SamplerKind::Independent; }},
             {"--exact-geometry", [](settings::RenderSettings& s) { s.exactGeometry = true; }},
             {"--no-specialize", [](settings::RenderSettings& s) { s.variant = settings::ShaderVariant::General; }},
@@ -153,6 +163,41 @@ TEST(RenderMetadata, SizeSceneCameraAndBuildAreDifferencesButSeedsSamplesAndTime
         << "the scene's contents count, not where it was read";
     EXPECT_FALSE(differs([](film::RenderMetadata& m) { m.settings.samplesPerFrame = 7; }))
         << "how frames cut the samples changes no sample";
+    EXPECT_FALSE(differs([](film::RenderMetadata& m) {
+        m.glContext = "OSMesa";
+        m.glRenderer = "llvmpipe (LLVM 15.0.6, 256 bits)";
+        m.kernel = "fragment";
+    })) << "another device or kernel traces the same samples: shards on different GPUs merge";
+}
+
+TEST(RenderMetadata, AFileWrittenBeforeTheRendererWasRecordedReadsWithoutIt)
+{
+    std::vector<io::ImageAttribute> attributes;
+    for (const io::ImageAttribute& attribute : film::metadataAttributes(someRender()))
+        if (attribute.name.rfind("raytracer:gl", 0) != 0 && attribute.name != "raytracer:kernel")
+            attributes.push_back(attribute);
+    const auto read = film::metadataFromAttributes(attributes, "old.exr");
+    ASSERT_TRUE(read.has_value());
+    EXPECT_EQ(read->glRenderer, "");
+    EXPECT_EQ(read->kernel, "");
+}
+
+TEST(RenderMetadata, RenderingDevicesOfCombinedRendersAreEachListedOnce)
+{
+    film::RenderMetadata combined = someRender();
+    film::RenderMetadata other = someRender();
+    film::addRenderingDevice(combined, other);
+    EXPECT_EQ(combined.glRenderer, "NVIDIA H200/PCIe/SSE2") << "one device, named once";
+    other.glContext = "OSMesa";
+    other.glRenderer = "llvmpipe (LLVM 15.0.6, 256 bits)";
+    other.glVersion = "4.5 (Core Profile) Mesa 22.3.6";
+    other.kernel = "fragment";
+    film::addRenderingDevice(combined, other);
+    film::addRenderingDevice(combined, other);
+    EXPECT_EQ(combined.glContext, "EGL device 0 (GPU, /dev/dri/renderD128); OSMesa");
+    EXPECT_EQ(combined.glRenderer, "NVIDIA H200/PCIe/SSE2; llvmpipe (LLVM 15.0.6, 256 bits)");
+    EXPECT_EQ(combined.glVersion, "4.6.0 NVIDIA 550.90.07; 4.5 (Core Profile) Mesa 22.3.6");
+    EXPECT_EQ(combined.kernel, "compute; fragment");
 }
 
 }  // namespace

@@ -39,7 +39,6 @@ int main(int argc, char* argv[])
         std::cout << "replaying " << input.string() << std::endl;
         LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
     }
-    std::cout << "replayed " << inputs.size() << " inputs through the scene parser's fuzz target"
-              << std::endl;
+    std::cout << "replayed " << inputs.size() << " inputs through the fuzz target" << std::endl;
     return inputs.empty() ? 1 : 0;
 }

@@ -151,5 +151,22 @@ TEST(ReloadDecision, TheCameraIsReplacedOnlyWhenItsLinesChanged)
     EXPECT_TRUE(render::cameraLinesChanged(parse(scene()).camera, parse(scene("0 1 5")).camera));
 }
 
+// The thin lens is written on the camera line: a lens added, removed or changed is the
+// camera changed.
+TEST(ReloadDecision, ALensEditedIsTheCameraChanged)
+{
+    auto withLens = [](const std::string& lens) {
+        std::string text = scene();
+        text.replace(text.find("45\n"), 3, "45 " + lens + "\n");
+        return text;
+    };
+    EXPECT_TRUE(render::cameraLinesChanged(parse(scene()).camera,
+                                           parse(withLens("lens 0.1 4")).camera));
+    EXPECT_TRUE(render::cameraLinesChanged(parse(withLens("lens 0.1 4")).camera,
+                                           parse(withLens("lens 0.2 4")).camera));
+    EXPECT_FALSE(render::cameraLinesChanged(parse(withLens("lens 0.1 4")).camera,
+                                            parse(withLens("lens 0.1 4")).camera));
+}
+
 }  // namespace
 }  // namespace interaction_tests

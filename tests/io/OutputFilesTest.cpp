@@ -10,7 +10,9 @@
 #include <cstring>
 #include <fstream>
 #include <random>
+#include <csignal>
 #include <sstream>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace io_tests {
@@ -186,6 +188,87 @@ TEST_F(OutputFiles, ChannelNamesAndAttributesComeBackFromAnExrAsWritten)
                                    [](const io::ImageAttribute& a) { return a.name == "raytracer:note"; });
     ASSERT_NE(note, file.attributes.end());
     EXPECT_EQ(note->value, "a test");
+}
+
+// --- temporary files left by a killed run -------------------------------------------------
+
+// The number of a process that has ended (and been reaped): no process of it runs now.
+long endedProcessId()
+{
+    const pid_t child = ::fork();
+    if (child == 0)
+        ::_exit(0);
+    ::waitpid(child, nullptr, 0);
+    return child;
+}
+
+std::string thisHost()
+{
+    char name[256] = {};
+    ::gethostname(name, sizeof name - 1);
+    return name;
+}
+
+TEST_F(OutputFiles, TemporariesOfTheDestinationWhoseProcessEndedAreRemoved)
+{
+    const long ended = endedProcessId();
+    const std::string host = thisHost();
+    const std::string endedHere = ".out.partial-" + host + "-" + std::to_string(ended) + "-0.exr";
+    const std::string earlierName = ".out.partial-" + std::to_string(ended) + "-1.exr";
+    const std::string running = ".out.partial-" + host + "-" + std::to_string(::getppid()) + "-0.exr";
+    const std::string otherMachine = ".out.partial-elsewhere-" + std::to_string(ended) + "-0.exr";
+    const std::string otherOutput = ".other.partial-" + host + "-" + std::to_string(ended) + "-0.exr";
+    const std::string otherFormat = ".out.partial-" + host + "-" + std::to_string(ended) + "-0.png";
+    for (const std::string& name :
+         {endedHere, earlierName, running, otherMachine, otherOutput, otherFormat})
+        std::ofstream(folder_ / name) << "21 MB of an image";
+
+    const std::vector<io::StaleTemporary> removed =
+        io::removeStaleTemporaries({folder_ / "out.exr"});
+
+    std::vector<std::string> removedNames;
+    for (const io::StaleTemporary& temporary : removed) {
+        removedNames.push_back(temporary.path.filename().string());
+        EXPECT_EQ(temporary.processId, ended);
+    }
+    std::sort(removedNames.begin(), removedNames.end());
+    EXPECT_EQ(removedNames, (std::vector<std::string>{earlierName, endedHere}));
+    std::vector<std::string> left = {running, otherMachine, otherOutput, otherFormat};
+    std::sort(left.begin(), left.end());
+    EXPECT_EQ(files(), left) << "a running process's, another machine's, another output's "
+                                "temporary files are left";
+}
+
+TEST_F(OutputFiles, ALinkNamedLikeATemporaryIsNotFollowed)
+{
+    std::ofstream(folder_ / "precious") << "kept";
+    const std::string name =
+        ".out.partial-" + thisHost() + "-" + std::to_string(endedProcessId()) + "-0.exr";
+    fs::create_symlink(folder_ / "precious", folder_ / name);
+    EXPECT_TRUE(io::removeStaleTemporaries({folder_ / "out.exr"}).empty());
+    EXPECT_EQ(contents(folder_ / "precious"), "kept");
+}
+
+TEST_F(OutputFiles, ATemporaryLeftByAKilledWriterIsRecognisedAndRemoved)
+{
+    // A child process makes the temporary file writeAllOrNothing would write, and is killed
+    // before it renames it.
+    const pid_t child = ::fork();
+    if (child == 0) {
+        std::ofstream(io::temporaryNameFor(folder_ / "a.png", 0)) << "half an image";
+        ::pause();
+        ::_exit(0);
+    }
+    while (files().empty())
+        ::usleep(1000);
+    EXPECT_TRUE(io::removeStaleTemporaries({folder_ / "a.png"}).empty())
+        << "its process still runs";
+    ::kill(child, SIGKILL);
+    ::waitpid(child, nullptr, 0);
+    const std::vector<io::StaleTemporary> removed = io::removeStaleTemporaries({folder_ / "a.png"});
+    ASSERT_EQ(removed.size(), 1u);
+    EXPECT_EQ(removed[0].processId, child);
+    EXPECT_TRUE(files().empty());
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // count with a seed of its own and compared with its reference by the noise-aware
 // comparison (support/ImageComparison.h, derived in tests/README.md). On failure the
 // side-by-side picture is written into the build tree and its path printed.
+#include "render/KernelChoice.h"
 #include "support/ImageComparison.h"
 #include "support/ReferenceImage.h"
 #include "support/RegressionCases.h"
@@ -94,6 +95,31 @@ std::vector<RegressionCase> casesForGeneralShader()
 
 INSTANTIATE_TEST_SUITE_P(Case, GeneralShaderRegression,
                          ::testing::ValuesIn(casesForGeneralShader()), caseName);
+
+// The compute kernel runs the fragment kernel's per-pixel code (render/PathKernel.h): on the
+// seven classic scenes, the ones its speed is measured on, it must agree with the same
+// references. Skipped where the context has no compute shaders (OpenGL 4.3).
+class ComputeKernelRegression : public ::testing::TestWithParam<RegressionCase> {};
+
+TEST_P(ComputeKernelRegression, ComputeKernelAgreesWithReference)
+{
+    if (!render::computeKernelAvailable())
+        GTEST_SKIP() << "this context has no compute shaders (OpenGL 4.3)";
+    settings::RenderSettings settings = settingsWithSeed(kTestSeed);
+    settings.kernel = settings::PathKernel::Compute;
+    expectAgreesWithReference(GetParam(), settings, "compute-kernel");
+}
+
+std::vector<RegressionCase> classicCases()
+{
+    std::vector<RegressionCase> cases;
+    for (int scene = 1; scene <= 7; ++scene)
+        cases.push_back(*findRegressionCase("scene" + std::to_string(scene)));
+    return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(Case, ComputeKernelRegression, ::testing::ValuesIn(classicCases()),
+                         caseName);
 
 }  // namespace
 }  // namespace testing_support

@@ -36,7 +36,8 @@ TEST(ProgramUniforms, SettingAMisspeltUniformIsAnError)
 {
     const render::PreparedScene prepared =
         render::prepareScene(scene1(), {}, render::defaultShaderDirectory());
-    render::PathTracerProgram program(prepared.fragmentSource, render::defaultShaderDirectory());
+    render::PathTracerProgram program(prepared.pathTracerSource, settings::PathKernel::Fragment,
+                                      render::defaultShaderDirectory());
     program.program().use();
     const std::string error =
         errorOf([&] { program.uniforms().set("uHitTolerence", 0.5f); });
@@ -48,7 +49,8 @@ TEST(ProgramUniforms, AUniformDeclaredAndNeverSetIsAnError)
 {
     const render::PreparedScene prepared =
         render::prepareScene(scene1(), {}, render::defaultShaderDirectory());
-    render::PathTracerProgram program(prepared.fragmentSource, render::defaultShaderDirectory());
+    render::PathTracerProgram program(prepared.pathTracerSource, settings::PathKernel::Fragment,
+                                      render::defaultShaderDirectory());
     program.program().use();
     program.uniforms().set("uHitTolerance", 0.5f);
     const std::string error = errorOf([&] { program.uniforms().checkEveryDeclaredSet(); });
@@ -93,8 +95,10 @@ TEST(ProgramUniforms, EverySettingTheShaderReadsIsALiveUniform)
     const render::PreparedScene specializedScene6 = render::prepareScene(
         scene::parseSceneFile(sourceDirectory() / "scenes" / "scene6.in"), {},
         render::defaultShaderDirectory());
-    render::PathTracerProgram first(generalScene1.fragmentSource, render::defaultShaderDirectory());
-    render::PathTracerProgram second(specializedScene6.fragmentSource,
+    render::PathTracerProgram first(generalScene1.pathTracerSource, settings::PathKernel::Fragment,
+                                    render::defaultShaderDirectory());
+    render::PathTracerProgram second(specializedScene6.pathTracerSource,
+                                     settings::PathKernel::Fragment,
                                      render::defaultShaderDirectory());
     for (const settings::SettingRow& row : settings::settingRows()) {
         if (!row.isUniform())

@@ -21,19 +21,22 @@ shadergen::ShaderSource probeSource()
 {
     const auto shaders = testing_support::sourceDirectory() / "shaders";
     shadergen::ShaderSource source;
-    // What the modules expect the scene's preamble to define: only Blinn-Phong among the
+    // What the modules expect the scene's preamble to define: Blinn-Phong and the rough
     // materials, one element in each scene array (unused here), and the kinds' codes.
     source.add("<preamble: the sampling probe>",
                "#version 330 core\n"
                "#define HAS_BLINN_PHONG 1\n#define HAS_MIRROR 0\n#define HAS_DIELECTRIC 0\n"
+               "#define HAS_ROUGH_CONDUCTOR 1\n#define HAS_ROUGH_DIELECTRIC 1\n"
+               "#define HAS_MICROFACET 1\n"
                "#define SHAPE_PARAMETER_ARRAY_SIZE 1\n#define SHAPE_PARAMETERS_READ_ONCE 0\n"
                "#define OBJECT_ARRAY_SIZE 1\n"
                "#define PIGMENT_ARRAY_SIZE 1\n#define FINISH_ARRAY_SIZE 1\n"
                "#define LIGHT_ARRAY_SIZE 1\n" +
                    shadergen::shaderCodeDefines());
-    const std::vector<std::string> modules = {"constants.glsl", "rng.glsl",        "sampler.glsl",
-                                              "sampling.glsl",  "scene_data.glsl", "fresnel.glsl",
-                                              "materials.glsl"};
+    const std::vector<std::string> modules = {
+        "constants.glsl", "rng.glsl",         "sampler.glsl",         "sampling.glsl",
+        "scene_data.glsl", "fresnel.glsl",    "ggx_albedo_table.glsl", "microfacet.glsl",
+        "materials.glsl"};
     source.add("<generated: the uniforms, read once per pixel>",
                shadergen::uniformBlock(render::pathTracerUniformDeclarations(), modules));
     for (const std::string& module : modules)
@@ -88,6 +91,10 @@ std::vector<glm::vec4> ShaderSampler::draw(int mode, const SamplingCase& samplin
                 static_cast<float>(grid.phiCells));
     glUniform1f(location("uGridThetaMax"), grid.thetaMax);
     glUniform1i(location("uDielectricFresnel"), settings::choiceCode(settings::FresnelModel::Schlick));
+    glUniform1f(location("uRoughness"), samplingCase.roughness);
+    glUniform1f(location("uIor"), samplingCase.ior);
+    glUniform1i(location("uEntering"), samplingCase.entering ? 1 : 0);
+    glUniform1i(location("uEnergyCompensation"), samplingCase.energyCompensation ? 1 : 0);
 
 
     framebuffer.bindForDrawing();

@@ -17,6 +17,8 @@ enum class SamplingRoutine {
     UniformCone = 1,          // sampleUniformCone / uniformConePdf, local frame
     BlinnPhongHalfVector = 2,  // sampleBlinnPhongHalfVector / blinnPhongHalfVectorPdf, local
     BlinnPhongMaterial = 3,   // blinnPhongSample / blinnPhongPdf / blinnPhongEvaluate, world
+    RoughConductorMaterial = 4,   // roughConductorSample / Pdf / Evaluate, world
+    RoughDielectricMaterial = 5,  // roughDielectricSample / Pdf / Evaluate, world
 };
 
 struct SamplingCase {
@@ -26,6 +28,10 @@ struct SamplingCase {
     glm::vec3 normal{0.0f, 0.0f, 1.0f};    // the material's only
     glm::vec3 outgoing{0.0f, 0.0f, 1.0f};  // the material's only: wo, unit
     glm::vec3 pigment{1.0f};               // the material's only: R0 of Schlick's Fresnel
+    float roughness = 0.3f;                // the rough materials' GGX alpha
+    float ior = 1.5f;                      // the rough dielectric's index
+    bool entering = true;                  // the rough dielectric: wo outside the medium
+    bool energyCompensation = true;        // the rough conductor's
 };
 
 // The directions of a pdf grid: cell (i, j) is centred on theta = (i + 1/2) thetaMax /

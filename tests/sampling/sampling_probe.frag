@@ -16,7 +16,8 @@
 // samples of one pixel, sample index = uSampleIndex + the fragment's row-major number.
 //
 // Routines (uRoutine): 0 cosine hemisphere, 1 uniform cone, 2 Blinn-Phong half vector (all
-// in the local frame, +z up), 3 the Blinn-Phong material (world directions).
+// in the local frame, +z up), 3 the Blinn-Phong material, 4 the rough conductor, 5 the rough
+// dielectric (world directions; a material's f cos takes |cos|, for transmission).
 
 uniform int uMode;
 uniform int uRoutine;
@@ -32,6 +33,9 @@ uniform mat3 uGridFrame;   // local (theta, phi) directions to world
 uniform vec2 uGridCells;   // theta cells, phi cells
 uniform float uGridThetaMax;
 uniform float uImageWidth;
+uniform float uRoughness;
+uniform float uIor;
+uniform int uEntering;
 
 layout(location = 0) out vec4 outValue;
 
@@ -41,14 +45,37 @@ Surface probeSurface()
     s.position = vec3(0.0);
     s.normal = uNormal;
     s.facingNormal = uNormal;
-    s.entering = true;
+    s.entering = uEntering != 0;
     s.color = uPigment;
     s.emission = vec3(0.0);
-    s.material = MATERIAL_BLINN_PHONG;
+    s.material = uRoutine == 4 ? MATERIAL_ROUGH_CONDUCTOR
+                               : uRoutine == 5 ? MATERIAL_ROUGH_DIELECTRIC : MATERIAL_BLINN_PHONG;
     s.phongExponent = uExponent;
-    s.ior = 1.0;
+    s.ior = uIor;
     s.lightIndex = -1;
+    s.roughness = uRoughness;
+    s.complexIor = false;
+    s.conductorEta = vec3(1.0);
+    s.conductorK = vec3(0.0);
     return s;
+}
+
+BsdfSample materialSample(float uLobe, vec2 u)
+{
+    if (uRoutine == 4)
+        return roughConductorSample(probeSurface(), uOutgoing, uLobe, u);
+    if (uRoutine == 5)
+        return roughDielectricSample(probeSurface(), uOutgoing, uLobe, u);
+    return blinnPhongSample(probeSurface(), uOutgoing, uLobe, u);
+}
+
+vec3 materialEvaluate(vec3 direction)
+{
+    if (uRoutine == 4)
+        return roughConductorEvaluate(probeSurface(), uOutgoing, direction);
+    if (uRoutine == 5)
+        return roughDielectricEvaluate(probeSurface(), uOutgoing, direction);
+    return blinnPhongEvaluate(probeSurface(), uOutgoing, direction);
 }
 
 float routinePdf(vec3 direction)
@@ -64,6 +91,10 @@ float routinePdf(vec3 direction)
     }
     if (uRoutine == 2)
         return blinnPhongHalfVectorPdf(direction.z, uExponent);
+    if (uRoutine == 4)
+        return roughConductorPdf(probeSurface(), uOutgoing, direction);
+    if (uRoutine == 5)
+        return roughDielectricPdf(probeSurface(), uOutgoing, direction);
     return blinnPhongPdf(probeSurface(), uOutgoing, direction);
 }
 
@@ -82,8 +113,8 @@ void main()
             outValue = vec4(direction, routinePdf(direction));
         } else {
             Surface s = probeSurface();
-            float cosine = max(dot(s.facingNormal, direction), 0.0);
-            outValue = vec4(blinnPhongEvaluate(s, uOutgoing, direction) * cosine, 1.0);
+            float cosine = abs(dot(s.facingNormal, direction));
+            outValue = vec4(materialEvaluate(direction) * cosine, 1.0);
         }
         return;
     }
@@ -104,7 +135,7 @@ void main()
     float uLobe = sample1D(uDimension + 1);
     vec2 u = sample2D(uDimension);
     if (uMode == 2) {
-        BsdfSample scattered = blinnPhongSample(probeSurface(), uOutgoing, uLobe, u);
+        BsdfSample scattered = materialSample(uLobe, u);
         outValue = scattered.valid ? vec4(scattered.weight, 1.0) : vec4(0.0);
         return;
     }
@@ -118,7 +149,7 @@ void main()
         vec3 direction = sampleBlinnPhongHalfVector(u, uExponent);
         outValue = vec4(direction, blinnPhongHalfVectorPdf(direction.z, uExponent));
     } else {
-        BsdfSample scattered = blinnPhongSample(probeSurface(), uOutgoing, uLobe, u);
+        BsdfSample scattered = materialSample(uLobe, u);
         outValue = scattered.valid ? vec4(scattered.direction, scattered.pdf)
                                    : vec4(0.0, 0.0, 0.0, -1.0);
     }

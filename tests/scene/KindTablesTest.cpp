@@ -146,6 +146,32 @@ TEST(MaterialKinds, EachDefinesItsFunctionsInMaterialsGlslAndAllButTheFallbackHa
     }
 }
 
+// A material with a keyword is written with it (and its numbers) in place of the seven
+// numbers of a classic finish, and parses into that material; one without is selected by the
+// classic numbers alone (Finish::material).
+TEST(MaterialKinds, EachKeywordFinishIsParsedFromItsKeywordAndHasAReader)
+{
+    const std::map<std::string, std::string> numbers = {{"rough_conductor", "0.3"},
+                                                        {"rough_dielectric", "0.3 1.5"}};
+    std::set<std::string> keywords;
+    for (const MaterialDescription& material : materialDescriptions()) {
+        if (material.keyword == nullptr) {
+            EXPECT_EQ(material.read, nullptr) << material.name;
+            EXPECT_EQ(material.model, Model::Classic) << material.name;
+            continue;
+        }
+        EXPECT_NE(material.read, nullptr) << material.name;
+        EXPECT_TRUE(keywords.insert(material.keyword).second) << material.keyword << " twice";
+        EXPECT_EQ(findFinishKeyword(material.keyword), &material) << material.keyword;
+        EXPECT_NE(finishKeywords().find(material.keyword), std::string::npos);
+        const auto example = numbers.find(material.keyword);
+        ASSERT_NE(example, numbers.end()) << material.keyword << ": this test has no example";
+        const Scene scene = parse(oneObject("sphere 0 0 0 1", "solid 1 1 1",
+                                            material.keyword + (" " + example->second)));
+        EXPECT_EQ(scene.finishes.at(0).material(), material.kind) << material.keyword;
+    }
+}
+
 // --- pigments ---------------------------------------------------------------------------
 
 TEST(PigmentKinds, CodesAreTheirPlaceInTheListAndKeywordsAreDistinct)

@@ -483,3 +483,144 @@ TEST(UserSdfDeclarations, ReservedWordsCannotNameAUserSdf)
 
 }  // namespace
 }  // namespace scene_tests
+
+namespace scene_tests {
+namespace {
+
+// --- rough finishes (GGX) -----------------------------------------------------------------
+
+// One white ball with the given finishes (the object takes finish 0), written on line 6.
+std::string withFinishes(int count, const std::string& finishes)
+{
+    return "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n" + std::to_string(count) + "\n" +
+           finishes + "\n1\n0 0 sphere 0 0 0 1\n";
+}
+
+TEST(RoughFinishes, ConductorTakesItsRoughnessAndThePigmentAsReflectance)
+{
+    const Scene scene = parse(withFinishes(1, "rough_conductor 0.25"));
+    const Finish& finish = scene.finishes.at(0);
+    EXPECT_EQ(finish.material(), MaterialKind::RoughConductor);
+    EXPECT_EQ(finish.roughness, 0.25f);
+    EXPECT_FALSE(finish.conductorIor.has_value());
+    EXPECT_FALSE(finish.isEmissive());
+}
+
+TEST(RoughFinishes, ConductorMayNameAMetal)
+{
+    const Finish finish = parse(withFinishes(1, "rough_conductor 0.1 gold")).finishes.at(0);
+    ASSERT_TRUE(finish.conductorIor.has_value());
+    EXPECT_TRUE(near(finish.conductorIor->eta, findNamedMetal("gold")->ior.eta));
+    EXPECT_TRUE(near(finish.conductorIor->k, findNamedMetal("gold")->ior.k));
+    // Gold reflects red and green far more than blue at normal incidence.
+    const glm::vec3 r0 = normalIncidenceReflectance(*finish.conductorIor);
+    EXPECT_GT(r0.r, 0.9f);
+    EXPECT_LT(r0.b, 0.4f);
+}
+
+TEST(RoughFinishes, ConductorMayGiveItsComplexIndex)
+{
+    const Finish finish =
+        parse(withFinishes(1, "rough_conductor 0.1 ior 0.2 0.9 1.1  3.9 2.4 2.1")).finishes.at(0);
+    ASSERT_TRUE(finish.conductorIor.has_value());
+    EXPECT_TRUE(near(finish.conductorIor->eta, glm::vec3(0.2f, 0.9f, 1.1f)));
+    EXPECT_TRUE(near(finish.conductorIor->k, glm::vec3(3.9f, 2.4f, 2.1f)));
+}
+
+TEST(RoughFinishes, DielectricTakesItsRoughnessAndIndex)
+{
+    const Finish finish = parse(withFinishes(1, "rough_dielectric 0.3 1.33")).finishes.at(0);
+    EXPECT_EQ(finish.material(), MaterialKind::RoughDielectric);
+    EXPECT_EQ(finish.roughness, 0.3f);
+    EXPECT_EQ(finish.ior, 1.33f);
+}
+
+TEST(RoughFinishes, MixWithClassicFinishesInAnyOrder)
+{
+    const Scene scene = parse(withFinishes(
+        4, "rough_conductor 0.5 copper\n0 0 0 0 0 0 0\nrough_dielectric 0.1 1.5\n0 0 0 0 1 0 0"));
+    ASSERT_EQ(scene.finishes.size(), 4u);
+    EXPECT_EQ(scene.finishes[0].material(), MaterialKind::RoughConductor);
+    EXPECT_EQ(scene.finishes[1].material(), MaterialKind::Lambertian);
+    EXPECT_EQ(scene.finishes[2].material(), MaterialKind::RoughDielectric);
+    EXPECT_EQ(scene.finishes[3].material(), MaterialKind::Mirror);
+}
+
+TEST(RoughFinishes, RoughnessMustBeAboveZeroAndAtMostOne)
+{
+    EXPECT_TRUE(failsAt(withFinishes(1, "rough_conductor 0"), 8, "0",
+                        "a roughness alpha greater than 0 and at most 1"));
+    EXPECT_TRUE(failsAt(withFinishes(1, "rough_dielectric 1.5 1.5"), 8, "1.5",
+                        "a roughness alpha greater than 0 and at most 1"));
+    EXPECT_TRUE(failsAt(withFinishes(1, "rough_conductor -0.1"), 8, "-0.1", "roughness alpha"));
+}
+
+TEST(RoughFinishes, AnUnknownMetalIsNamedWithTheMetalsThereAre)
+{
+    EXPECT_TRUE(failsAt(withFinishes(1, "rough_conductor 0.1 gld"), 8, "gld",
+                        "a metal (gold, silver, copper"));
+}
+
+TEST(RoughFinishes, DielectricIndexMustBePositiveAndNotOne)
+{
+    EXPECT_TRUE(failsAt(withFinishes(1, "rough_dielectric 0.1 1"), 8, "1",
+                        "a positive index of refraction other than 1"));
+    EXPECT_TRUE(failsAt(withFinishes(1, "rough_dielectric 0.1 0"), 8, "0",
+                        "a positive index of refraction other than 1"));
+}
+
+TEST(RoughFinishes, AConductorsComplexIndexNeedsAPositiveEta)
+{
+    EXPECT_TRUE(failsAt(withFinishes(1, "rough_conductor 0.1 ior 0 1 1 1 1 1"), 8, "0",
+                        "a positive index of refraction eta"));
+}
+
+TEST(RoughFinishes, AMisspeltKeywordIsReadAsAClassicFinishAndNamesTheKeywords)
+{
+    EXPECT_TRUE(failsAt(withFinishes(1, "rough_conductr 0.1"), 8, "rough_conductr",
+                        "or a finish keyword: rough_conductor or rough_dielectric"));
+}
+
+TEST(RoughFinishes, EmitNothingSoCannotMakeALight)
+{
+    const Scene scene = parse(withFinishes(1, "rough_dielectric 0.2 1.5"));
+    EXPECT_TRUE(sphereLights(scene).empty());
+}
+
+// --- the thin lens --------------------------------------------------------------------------
+
+std::string withCamera(const std::string& camera)
+{
+    return camera + "\n0\n1 solid 1 1 1\n1 0 0 0 0 0 0 0\n1 0 0 sphere 0 0 0 1\n";
+}
+
+TEST(ThinLensCamera, FollowsTheFieldOfView)
+{
+    const Scene scene = parse(withCamera("0 0 5\n0 0 0\n0 1 0\n45 lens 0.1 4.5"));
+    ASSERT_TRUE(scene.camera.lens.has_value());
+    EXPECT_EQ(scene.camera.lens->apertureRadius, 0.1f);
+    EXPECT_EQ(scene.camera.lens->focusDistance, 4.5f);
+}
+
+TEST(ThinLensCamera, AbsentIsThePinhole)
+{
+    EXPECT_FALSE(parse(withCamera("0 0 5\n0 0 0\n0 1 0\n45")).camera.lens.has_value());
+}
+
+TEST(ThinLensCamera, ApertureZeroIsThePinhole)
+{
+    EXPECT_FALSE(parse(withCamera("0 0 5\n0 0 0\n0 1 0\n45 lens 0 3")).camera.lens.has_value());
+}
+
+TEST(ThinLensCamera, NeedsANonNegativeApertureAndAPositiveFocusDistance)
+{
+    EXPECT_TRUE(failsAt(withCamera("0 0 5\n0 0 0\n0 1 0\n45 lens -1 3"), 4, "-1",
+                        "lens aperture radius"));
+    EXPECT_TRUE(failsAt(withCamera("0 0 5\n0 0 0\n0 1 0\n45 lens 0.1 0"), 4, "0",
+                        "lens focus distance"));
+    EXPECT_TRUE(failsAt(withCamera("0 0 5\n0 0 0\n0 1 0\n45 lens 0.1"), 5, "0",
+                        "lens focus distance"));
+}
+
+}  // namespace
+}  // namespace scene_tests

@@ -90,3 +90,35 @@ TEST(SceneFeatures, EverythingHasEveryFeatureAndTheScenesUserSdfs)
 
 }  // namespace
 }  // namespace scene_tests
+
+namespace scene_tests {
+namespace {
+
+TEST(SceneFeatures, RoughFinishesAreMicrofacetMaterials)
+{
+    const std::string text = "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
+                             "2\nrough_conductor 0.2\nrough_dielectric 0.2 1.5\n"
+                             "1\n0 1 sphere 0 0 0 1\n";
+    const SceneFeatures features = analyseFeatures(parse(text));
+    EXPECT_EQ(features.materials, std::set<MaterialKind>{MaterialKind::RoughDielectric});
+    EXPECT_TRUE(features.microfacets);
+    EXPECT_FALSE(features.thinLens);
+}
+
+TEST(SceneFeatures, AClassicSceneHasNoMicrofacetsAndAPinhole)
+{
+    const SceneFeatures features = analyseFeatures(parse(sceneWithObjects(1, "0 0 sphere 0 0 0 1\n")));
+    EXPECT_FALSE(features.microfacets);
+    EXPECT_FALSE(features.thinLens);
+}
+
+TEST(SceneFeatures, ALensIsAFeature)
+{
+    const std::string text = "0 0 5\n0 0 0\n0 1 0\n45 lens 0.1 5\n0\n1 solid 1 1 1\n"
+                             "1\n0 0 0 0 0 0 0\n1\n0 0 sphere 0 0 0 1\n";
+    EXPECT_TRUE(analyseFeatures(parse(text)).thinLens);
+    EXPECT_TRUE(SceneFeatures::everything(parse(text)).thinLens);
+}
+
+}  // namespace
+}  // namespace scene_tests

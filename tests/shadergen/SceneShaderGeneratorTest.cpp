@@ -214,6 +214,50 @@ TEST(RayCulling, AShapeInsideACsgNodeIsStillMarched)
     EXPECT_TRUE(code.marchesAnything);
 }
 
+SceneShaderCode exactReference(const std::string& objects, int count)
+{
+    shadergen::ShaderBuild build{ShaderVariant::Specialized};
+    build.exactGeometry = true;
+    return generateSceneShaderCode(parse(sceneWithObjects(count, objects)), build);
+}
+
+TEST(ExactReference, ASharpCsgBlockOfShapesWithAClosedFormIsWalkedOverItsLeavesCrossings)
+{
+    const SceneShaderCode code = exactReference("0 0 translate 0 1 0 difference {\n"
+                                                "  intersection { box 0 0 0 1 1 1  sphere 0 0 0 1.3 }\n"
+                                                "  rotate 1 0 0 90 cylinder 0 0 0 0.5 2\n"
+                                                "}\n",
+                                                1);
+    EXPECT_EQ(occurrences(code.exactFunctions, R"(bool exactCsgCrossing0\()"), 1);
+    EXPECT_EQ(occurrences(code.exactFunctions, R"(exactCsgCrossing0\(origin, direction, tMin, 0, hit\))"), 1)
+        << "exactSceneIntersect meets the object by its walk";
+    EXPECT_EQ(occurrences(code.exactFunctions, R"(exact(Box|Sphere|CappedCylinder)\()"), 3)
+        << "each of the three leaves is met by its own closed form";
+}
+
+TEST(ExactReference, ASmoothedCsgBlockIsRefusedWithItsFileAndLine)
+{
+    try {
+        exactReference("0 0 sphere 0 0 0 1\n"
+                       "0 0 smooth_union poly 0.2 { box 0 0 0 1 1 1  sphere 0 1 0 0.6 }\n",
+                       2);
+        FAIL() << "a smoothed block has no exact intersection";
+    } catch (const std::runtime_error& error) {
+        EXPECT_NE(std::string(error.what()).find(kFileName + ":14: --exact-geometry"),
+                  std::string::npos)
+            << error.what();
+        EXPECT_NE(std::string(error.what()).find("smoothed operator"), std::string::npos)
+            << error.what();
+    }
+}
+
+TEST(ExactReference, ACsgBlockWithADiskIsRefused)
+{
+    // A disk has no inside for the walk to classify.
+    EXPECT_THROW(exactReference("0 0 union { box 0 0 0 1 1 1  disk 0 2 0  0 1 0  1 }\n", 1),
+                 std::runtime_error);
+}
+
 TEST(RayCulling, TransformedPolyhedronIsMetByItsPlanesInWorldSpace)
 {
     // The solid y <= 0, scaled by 2, turned 90 degrees about z (the solid x >= 0, or

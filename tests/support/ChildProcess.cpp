@@ -84,6 +84,12 @@ ProcessResult runProcess(const std::vector<std::string>& arguments, const Proces
         throw std::runtime_error("pipe failed");
     }
 
+    // Closed by the exec (close-on-exec), so that the parent knows when the program runs; a
+    // failed exec writes its errno first.
+    int execPipe[2];
+    if (pipe2(execPipe, O_CLOEXEC) != 0)
+        throw std::runtime_error("pipe failed");
+
     // Blocked before fork, so that the child has it blocked from its first instruction (a
     // signal sent at once cannot come before); the parent restores its own mask after.
     sigset_t parentMask;
@@ -112,13 +118,23 @@ ProcessResult runProcess(const std::vector<std::string>& arguments, const Proces
         if (chdir(directory.c_str()) != 0)
             _exit(126);
 
+        close(execPipe[0]);
         execve(argv[0], argv.data(), envp.data());
+        const int error = errno;
+        (void)!write(execPipe[1], &error, sizeof error);
         _exit(127);
     }
     if (options.startWithSignalBlocked)
         sigprocmask(SIG_SETMASK, &parentMask, nullptr);
     close(outputPipe[1]);
     close(errorPipe[1]);
+    close(execPipe[1]);
+    // Until the exec: end of file (it succeeded) or its errno.
+    int execError = 0;
+    while (read(execPipe[0], &execError, sizeof execError) < 0 && errno == EINTR) {
+    }
+    close(execPipe[0]);
+    const auto started = std::chrono::steady_clock::now();
 
     ProcessResult result;
     auto elapsed = [&] {
@@ -129,7 +145,9 @@ ProcessResult runProcess(const std::vector<std::string>& arguments, const Proces
     std::string* sinks[2] = {&result.standardOutput, &result.standardError};
     int openStreams = 2;
     while (openStreams > 0) {
-        if (options.signalAfterSeconds && !signalled && elapsed() >= *options.signalAfterSeconds) {
+        if (options.signalAfterSeconds && !signalled &&
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >=
+                *options.signalAfterSeconds) {
             kill(pid, options.signal);
             signalled = true;
         }
@@ -137,7 +155,9 @@ ProcessResult runProcess(const std::vector<std::string>& arguments, const Proces
             kill(pid, SIGKILL);
             result.timedOut = true;
         }
-        if (poll(streams, 2, 20) < 0)
+        // Short waits while a signal is due, so that it goes within a millisecond of its time.
+        const int waitMilliseconds = options.signalAfterSeconds && !signalled ? 1 : 20;
+        if (poll(streams, 2, waitMilliseconds) < 0)
             continue;
         for (int i = 0; i < 2; ++i) {
             if (streams[i].fd < 0 || streams[i].revents == 0)

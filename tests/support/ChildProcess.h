@@ -14,7 +14,8 @@ struct ProcessOptions {
     std::filesystem::path workingDirectory = ".";
     // Environment variables to set (a value) or remove (nullopt); the rest is inherited.
     std::map<std::string, std::optional<std::string>> environment;
-    // Sends `signal` this long after the start,
+    // Sends `signal` this long after the program started (its exec succeeded: a signal sent
+    // before that reaches the test's own child, which is not the program yet),
     std::optional<double> signalAfterSeconds;
     // or as soon as standard error shows this text (with terminalColumns: once the progress
     // line says a frame is done).

@@ -8,6 +8,10 @@
 #   --first-seed S      array task T renders with seed S + T (default 1)
 #   --max-running N     at most N shards at once (sbatch --array=0-M%N)
 #   --cpus N            processors per shard (default 1)
+#   --gpu               each shard on a GPU: sbatch --gres=gpu:1, and the shard renders with
+#                       --gl gpu (EGL on a GPU, never on the processor). Each task must see
+#                       only its own GPU: Slurm's cgroup ConstrainDevices=yes (see
+#                       docs/SCALE_OUT.md, "One shard per GPU")
 #   --options "..."     more raytracer options for every shard ("--max-bounces 8")
 #   --raytracer PATH    the program (default: $RAYTRACER, else build/raytracer here)
 # Options after -- go to both sbatch calls (--partition, --time, --account ...).
@@ -23,7 +27,7 @@ fail() { echo "submit: $*" >&2; exit "${2:-1}"; }
 
 scene=$1 width=$2 height=$3 spp=$4 shards=$5 output=$6
 shift 6
-png="" first_seed=1 max_running="" cpus=1 options="" raytracer="${RAYTRACER:-$root/build/raytracer}"
+png="" first_seed=1 max_running="" cpus=1 gpu=0 options="" raytracer="${RAYTRACER:-$root/build/raytracer}"
 sbatch_options=()
 while [ $# -gt 0 ]; do
     case "$1" in
@@ -31,6 +35,7 @@ while [ $# -gt 0 ]; do
         --first-seed) first_seed=${2:?}; shift 2 ;;
         --max-running) max_running=${2:?}; shift 2 ;;
         --cpus) cpus=${2:?}; shift 2 ;;
+        --gpu) gpu=1; shift ;;
         --options) options=${2?}; shift 2 ;;
         --raytracer) raytracer=${2:?}; shift 2 ;;
         --) shift; sbatch_options=("$@"); break ;;
@@ -57,9 +62,11 @@ shard_dir="${output%.exr}-shards"
 mkdir -p "$shard_dir"
 common="ALL,RAYTRACER=$(absolute "$raytracer"),SHARD_DIR=$shard_dir,SHARDS=$shards,FIRST_SEED=$first_seed"
 
+gres=()
+[ "$gpu" = 1 ] && gres=(--gres=gpu:1)
 array=$(sbatch --parsable --array="0-$((shards - 1))${max_running:+%$max_running}" \
-    --cpus-per-task="$cpus" --output="$shard_dir/shard-%a.log" \
-    --export="$common,SCENE=$(absolute "$scene"),WIDTH=$width,HEIGHT=$height,SPP=$spp,RAYTRACER_OPTIONS=$options" \
+    --cpus-per-task="$cpus" "${gres[@]}" --output="$shard_dir/shard-%a.log" \
+    --export="$common,SCENE=$(absolute "$scene"),WIDTH=$width,HEIGHT=$height,SPP=$spp,GPU=$gpu,RAYTRACER_OPTIONS=$options" \
     "${sbatch_options[@]}" "$here/render-shard.sbatch")
 array=${array%%;*}
 merge=$(sbatch --parsable --dependency="afterok:$array" --kill-on-invalid-dep=yes \
