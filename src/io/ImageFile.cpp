@@ -148,6 +148,13 @@ void checkReadableImage(const fs::path& path)
     openForReading(path)->close();
 }
 
+ImageSize readImageSize(const fs::path& path)
+{
+    const auto input = openForReading(path);
+    const OIIO::ImageSpec& spec = input->spec();
+    return {spec.width, spec.height, spec.nchannels};
+}
+
 std::optional<std::string> readImageAttribute(const fs::path& path, const std::string& name)
 {
     const auto input = openForReading(path);

@@ -37,6 +37,16 @@ void writeImageFile(const std::filesystem::path& file, const std::filesystem::pa
 // header is read, not its pixels).
 void checkReadableImage(const std::filesystem::path& path);
 
+// What an image file's header says of its size, read without its pixels: so that a reader
+// can refuse a file too large to hold before allocating for it.
+struct ImageSize {
+    int width = 0;
+    int height = 0;
+    int channels = 0;
+};
+// Throws std::runtime_error naming the file and the reason when it cannot be opened.
+ImageSize readImageSize(const std::filesystem::path& path);
+
 // The value of the metadata attribute `name` in the image file, as text; nothing when the
 // file has no such attribute (or its format holds none). Throws when the file is unreadable.
 std::optional<std::string> readImageAttribute(const std::filesystem::path& path,

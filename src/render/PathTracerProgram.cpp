@@ -68,8 +68,10 @@ ShaderSource assemblePathTracerSource(const SceneShaderCode& code, const fs::pat
     } else {
         module("ray_queries_traced.glsl");
     }
-    module("lights.glsl");
     module("environment.glsl");
+    module("lights.glsl");
+    source.add("<generated: the dispatchers over the light kinds>", lightDispatchers());
+    module("direct_lighting.glsl");
     module("integrator.glsl");
     module("path_tracer_main.glsl");
     return source;

@@ -25,6 +25,13 @@ int coarseSide(int side, int divisor)
     return std::max(1, (side + divisor - 1) / divisor);
 }
 
+std::optional<EnvironmentMapTextures> uploadEnvironmentTextures(const EnvironmentMap* map)
+{
+    if (map == nullptr)
+        return std::nullopt;
+    return uploadEnvironmentMap(*map);
+}
+
 }  // namespace
 
 void checkRenderSize(int width, int height)
@@ -58,6 +65,8 @@ ProgressiveRenderer::ProgressiveRenderer(PreparedScene prepared, int width, int 
                 std::make_unique<PathTracerProgram>(prepared.fragmentSource,
                                                     defaultShaderDirectory()))),
       pigmentTextures_(loadPigmentTextures(uniforms_.textureLayers)),
+      environmentMap_(std::move(prepared.environmentMap)),
+      environmentTextures_(uploadEnvironmentTextures(environmentMap_.get())),
       targets_(width, height),
       toneMapper_(defaultShaderDirectory()),
       tileSampleTargets_(gl::createTexture2D(GL_R32F, 1, 1, GL_RED, GL_FLOAT, nullptr))
@@ -83,6 +92,7 @@ void ProgressiveRenderer::generateDriverCode()
     targets_.previous().estimate.bind(0);
     targets_.previous().moments.bind(1);
     pigmentTextures_.texture.bind(3);
+    bindEnvironmentTextures();
     targets_.next().framebuffer.bindForDrawing();
     glViewport(0, 0, width(), height());
     glEnable(GL_SCISSOR_TEST);
@@ -94,6 +104,12 @@ void ProgressiveRenderer::generateDriverCode()
     gl::throwOnGlError("generating the shader's code");
 }
 
+void ProgressiveRenderer::bindEnvironmentTextures() const
+{
+    if (environmentTextures_)
+        environmentTextures_->bind();
+}
+
 void ProgressiveRenderer::uploadAll()
 {
     program_->program().use();
@@ -102,6 +118,12 @@ void ProgressiveRenderer::uploadAll()
     glUniform1i(program.uniformLocation("uPreviousEstimate"), 0);
     glUniform1i(program.uniformLocation("uPreviousMoments"), 1);
     glUniform1i(program.uniformLocation("uPigmentTextures"), 3);
+    if (environmentTextures_) {
+        glUniform1i(program.uniformLocation("uEnvironmentMap"),
+                    EnvironmentMapTextures::kRadianceUnit);
+        glUniform1i(program.uniformLocation("uEnvironmentDistribution"),
+                    EnvironmentMapTextures::kDistributionUnit);
+    }
     glUniform1i(program.uniformLocation("uTileSampleTargets"), kTileSampleTargetsUnit);
     glUniform1f(program.uniformLocation("uPigmentTextureSize"),
                 static_cast<float>(pigmentTextures_.size));
@@ -124,16 +146,22 @@ ReloadDecision ProgressiveRenderer::setScene(const scene::Scene& original,
             ? std::make_unique<PathTracerProgram>(prepared.fragmentSource, defaultShaderDirectory())
             : nullptr;
     std::optional<PigmentTextures> textures;
-    if (decision.reloadTextures)
+    std::optional<EnvironmentMapTextures> environmentTextures;
+    if (decision.reloadTextures) {
         textures = loadPigmentTextures(prepared.uniforms.textureLayers);
+        environmentTextures = uploadEnvironmentTextures(prepared.environmentMap.get());
+    }
 
     scene_ = std::move(prepared.visible);
     code_ = std::move(prepared.code);
     uniforms_ = std::move(prepared.uniforms);
     if (program)
         program_ = std::move(program);
-    if (textures)
+    if (textures) {
         pigmentTextures_ = std::move(*textures);
+        environmentTextures_ = std::move(environmentTextures);
+    }
+    environmentMap_ = std::move(prepared.environmentMap);
     uploadAll();
     restartAccumulation();
     if (decision.rebuildShader)
@@ -145,7 +173,7 @@ void ProgressiveRenderer::setCamera(const scene::Camera& camera)
 {
     scene_.camera = camera;
     // The scene's bounds hold the camera, and the tolerances follow the bounds.
-    uniforms_ = packSceneUniforms(scene_, code_);
+    uniforms_ = packSceneUniforms(scene_, code_, environmentMap_.get());
     uploadAll();
     clearAccumulation();
 }
@@ -234,6 +262,7 @@ void ProgressiveRenderer::renderPreview(int divisor, int maxBounces)
     source.estimate.bind(0);
     source.moments.bind(1);
     pigmentTextures_.texture.bind(3);
+    bindEnvironmentTextures();
     targets_.next().framebuffer.bindForDrawing();
     glViewport(0, 0, width(), height());
     glEnable(GL_SCISSOR_TEST);
@@ -308,6 +337,7 @@ bool ProgressiveRenderer::drawFrame(const std::function<bool()>& keepGoing, int 
     source.estimate.bind(0);
     source.moments.bind(1);
     pigmentTextures_.texture.bind(3);
+    bindEnvironmentTextures();
     tileSampleTargets_.bind(kTileSampleTargetsUnit);
     destination.framebuffer.bindForDrawing();
     // The viewport stays the whole image so gl_FragCoord is the pixel; the scissor picks

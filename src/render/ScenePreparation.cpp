@@ -12,7 +12,9 @@ PreparedScene prepareScene(const scene::Scene& scene, const ShaderBuild& build,
     PreparedScene prepared;
     prepared.visible = scene::dropInvisibleObjects(scene);
     prepared.code = generateSceneShaderCode(prepared.visible, build);
-    prepared.uniforms = packSceneUniforms(prepared.visible, prepared.code);
+    prepared.environmentMap = loadSceneEnvironmentMap(prepared.visible);
+    prepared.uniforms =
+        packSceneUniforms(prepared.visible, prepared.code, prepared.environmentMap.get());
     prepared.fragmentSource = assemblePathTracerSource(prepared.code, shaderDirectory);
     return prepared;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // The one preparation stage between a parsed scene and the GPU: objects that do nothing to
-// light are dropped, the shader code is generated for what is left, its numbers are packed
-// and the fragment shader is assembled. Pure (it reads shader files, never GL state): the
+// light are dropped, the shader code is generated for what is left, the environment map is
+// read, the numbers are packed and the fragment shader is assembled. Pure (it reads shader
+// and image files, never GL state): the
 // renderer, `--features`, `--print-shader` and the benchmarks all prepare a scene here, so
 // they all see the same visible scene, features and source.
 #include "render/RenderSettings.h"
@@ -11,6 +12,7 @@
 #include "scene/Scene.h"
 
 #include <filesystem>
+#include <memory>
 
 namespace render {
 
@@ -18,6 +20,8 @@ struct PreparedScene {
     scene::Scene visible;      // without its invisible objects (scene/InvisibleObjects.h)
     SceneShaderCode code;      // code.features: what the shader is built for
     SceneUniforms uniforms;    // every number the shader reads from the scene
+    // The environment map, read and made ready for sampling; nullptr where there is none.
+    std::shared_ptr<const EnvironmentMap> environmentMap;
     ShaderSource fragmentSource;
 };
 

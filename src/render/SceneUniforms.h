@@ -1,4 +1,5 @@
 #pragma once
+#include "render/EnvironmentMap.h"
 #include "render/RenderSettings.h"
 #include "render/SceneShaderGenerator.h"
 #include "scene/Scene.h"
@@ -23,7 +24,7 @@ struct SceneUniforms {
     std::vector<glm::vec4> pigments;
     std::vector<glm::vec4> finishes;
     std::vector<glm::vec4> lights;
-    // The culling bits of the sphere lights that have one (scene_data.glsl).
+    // The culling bits of the lights that are objects and have one (scene_data.glsl).
     std::uint32_t sphereLightPieces = 0;
     // Image files in texture-array layer order; pigments refer to them by layer.
     std::vector<std::filesystem::path> textureLayers;
@@ -39,11 +40,10 @@ struct SceneUniforms {
     bool operator!=(const SceneUniforms& other) const { return !(*this == other); }
 };
 
-SceneUniforms packSceneUniforms(const scene::Scene& scene, const SceneShaderCode& code);
-
-// Emitted power of each light, the quantity lights are selected by: 4 pi I for a point
-// light, 4 pi^2 r^2 L for a sphere of radiance L (channels averaged).
-std::vector<double> lightPowers(const scene::Scene& scene);
+// `environmentMap`: the scene's map (render/EnvironmentMap.h), whose power its light's
+// selection probability needs; nullptr where the scene has none.
+SceneUniforms packSceneUniforms(const scene::Scene& scene, const SceneShaderCode& code,
+                                const EnvironmentMap* environmentMap = nullptr);
 
 // Sets every scene and settings uniform of `program` (which must be in use).
 void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,

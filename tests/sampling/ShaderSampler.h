@@ -1,8 +1,9 @@
 #pragma once
-// Runs the renderer's GLSL sampling routines and pdfs (shaders/modules/sampling.glsl and
-// materials.glsl, unmodified) on the GPU through a probe shader of the test's own
+// Runs the renderer's GLSL sampling routines and pdfs (shaders/modules/sampling.glsl,
+// materials.glsl and environment.glsl, unmodified) on the GPU through a probe shader of the test's own
 // (sampling_probe.frag), so that what is tested is the code that renders.
 #include "gl/Shader.h"
+#include "render/EnvironmentMap.h"
 
 #include <glm/glm.hpp>
 
@@ -17,6 +18,7 @@ enum class SamplingRoutine {
     UniformCone = 1,          // sampleUniformCone / uniformConePdf, local frame
     BlinnPhongHalfVector = 2,  // sampleBlinnPhongHalfVector / blinnPhongHalfVectorPdf, local
     BlinnPhongMaterial = 3,   // blinnPhongSample / blinnPhongPdf / blinnPhongEvaluate, world
+    EnvironmentMap = 4,       // sampleEnvironmentMap / environmentMapPdf, world
 };
 
 struct SamplingCase {
@@ -26,6 +28,9 @@ struct SamplingCase {
     glm::vec3 normal{0.0f, 0.0f, 1.0f};    // the material's only
     glm::vec3 outgoing{0.0f, 0.0f, 1.0f};  // the material's only: wo, unit
     glm::vec3 pigment{1.0f};               // the material's only: R0 of Schlick's Fresnel
+    // The environment map's only: the map (uploaded for the draw) and its rotation about +y.
+    const render::EnvironmentMap* environmentMap = nullptr;
+    float environmentRotationDegrees = 0.0f;
 };
 
 // The directions of a pdf grid: cell (i, j) is centred on theta = (i + 1/2) thetaMax /

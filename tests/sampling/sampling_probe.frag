@@ -1,5 +1,5 @@
 // The test's own main(), appended to the renderer's modules (constants, rng, sampler,
-// sampling, scene_data, fresnel, materials): it runs the real sampling and pdf routines, one
+// sampling, scene_data, fresnel, materials, environment): it runs the real sampling and pdf routines, one
 // per fragment, and writes what they returned into an RGBA32F target read back by the test.
 //
 //   uMode 0: draw one sample per fragment; rgb = the direction, a = its pdf (-1: no sample)
@@ -16,7 +16,8 @@
 // samples of one pixel, sample index = uSampleIndex + the fragment's row-major number.
 //
 // Routines (uRoutine): 0 cosine hemisphere, 1 uniform cone, 2 Blinn-Phong half vector (all
-// in the local frame, +z up), 3 the Blinn-Phong material (world directions).
+// in the local frame, +z up), 3 the Blinn-Phong material, 4 the environment map (both in
+// world directions).
 
 uniform int uMode;
 uniform int uRoutine;
@@ -64,6 +65,8 @@ float routinePdf(vec3 direction)
     }
     if (uRoutine == 2)
         return blinnPhongHalfVectorPdf(direction.z, uExponent);
+    if (uRoutine == 4)
+        return environmentMapPdf(direction);
     return blinnPhongPdf(probeSurface(), uOutgoing, direction);
 }
 
@@ -73,6 +76,7 @@ void main()
     readSceneDataUniformsOnce();
     readSamplerUniformsOnce();
     readFresnelUniformsOnce();
+    readEnvironmentUniformsOnce();
     ivec2 fragment = ivec2(gl_FragCoord.xy);
     if (uMode == 1 || uMode == 3) {
         float theta = gl_FragCoord.x / uGridCells.x * uGridThetaMax;
@@ -118,6 +122,10 @@ void main()
     } else if (uRoutine == 2) {
         vec3 direction = sampleBlinnPhongHalfVector(u, uExponent);
         outValue = vec4(direction, blinnPhongHalfVectorPdf(direction.z, uExponent));
+    } else if (uRoutine == 4) {
+        EnvironmentMapSample chosen = sampleEnvironmentMap(u);
+        outValue = chosen.pdf > 0.0 ? vec4(chosen.direction, chosen.pdf)
+                                    : vec4(0.0, 0.0, 0.0, -1.0);
     } else {
         BsdfSample scattered = blinnPhongSample(probeSurface(), uOutgoing, uLobe, u);
         outValue = scattered.valid ? vec4(scattered.direction, scattered.pdf)
