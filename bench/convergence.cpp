@@ -20,7 +20,7 @@
 //                 relative MSE of the Monte Carlo denoising literature, e.g. Rousselle,
 //                 Knaus and Zwicker 2011); see kRelativeMseEpsilon for the choice of eps;
 //   tone RMSE     root mean square difference of the displayed pictures on the 0..255 scale,
-//                 after the display's tone curve (render/ToneCurve.h) in double, not
+//                 after the display's tone curve (film/ToneCurve.h) in double, not
 //                 rounded to 8 bits, so that differences under one level still show.
 //
 // The noise of an image that is the mean of n samples is measured without a second render:
@@ -64,7 +64,7 @@ using namespace convergence;
 // ---------------------------------------------------------------------------------------
 // Settings
 
-bool sameSettings(const render::RenderSettings& a, const render::RenderSettings& b)
+bool sameSettings(const settings::RenderSettings& a, const settings::RenderSettings& b)
 {
     return a.hitTolerance == b.hitTolerance && a.maxMarchSteps == b.maxMarchSteps &&
            a.overRelaxation == b.overRelaxation && a.stepScale == b.stepScale &&
@@ -76,7 +76,7 @@ bool sameSettings(const render::RenderSettings& a, const render::RenderSettings&
 struct SettingValue {
     double value;       // for the plots' axes (categories are numbered)
     std::string label;  // as the command line spells it
-    std::function<void(render::RenderSettings&)> apply;
+    std::function<void(settings::RenderSettings&)> apply;
 };
 
 // One accuracy setting, named as the raytracer's option for it, and the values it is
@@ -88,7 +88,7 @@ struct SettingSweep {
 
 std::vector<SettingSweep> accuracySettingSweeps()
 {
-    using render::RenderSettings;
+    using settings::RenderSettings;
     std::vector<SettingSweep> sweeps;
     auto numeric = [&](const std::string& name, std::vector<double> values,
                        std::function<void(RenderSettings&, double)> set) {
@@ -114,12 +114,12 @@ std::vector<SettingSweep> accuracySettingSweeps()
         return [on](RenderSettings& s) { s.multipleImportanceSampling = on; };
     };
     sweeps.push_back({"mis", {{1, "on", setMis(true)}, {0, "off", setMis(false)}}});
-    auto setFresnel = [](render::FresnelModel model) {
+    auto setFresnel = [](settings::FresnelModel model) {
         return [model](RenderSettings& s) { s.dielectricFresnel = model; };
     };
     sweeps.push_back({"fresnel",
-                      {{0, "schlick", setFresnel(render::FresnelModel::Schlick)},
-                       {1, "exact", setFresnel(render::FresnelModel::Exact)}}});
+                      {{0, "schlick", setFresnel(settings::FresnelModel::Schlick)},
+                       {1, "exact", setFresnel(settings::FresnelModel::Exact)}}});
     return sweeps;
 }
 
@@ -206,7 +206,7 @@ void measureConvergence(const scene::Scene& scene, const Reference& reference,
                         const Options& options, CsvFile& csv)
 {
     const std::string name = sceneName(scene.sourcePath);
-    render::RenderSettings settings;
+    settings::RenderSettings settings;
     settings.seed = options.seed;
     TimedRenderer run(scene, options.width, options.height, settings,
                       samplesPerFrameFor(options, options.width, options.height));
@@ -259,7 +259,7 @@ struct SettingRun {
     long long discarded = 0;
 };
 
-SettingRun runSetting(const scene::Scene& scene, const render::RenderSettings& settings,
+SettingRun runSetting(const scene::Scene& scene, const settings::RenderSettings& settings,
                       const Reference& reference, const Options& options)
 {
     TimedRenderer run(scene, options.width, options.height, settings,
@@ -299,7 +299,7 @@ void measureSettings(const scene::Scene& scene, const Reference& reference,
     std::printf("%-16s %8s %9s %9s %9s %9s %11s %11s %11s %10s %18s %9s\n", "setting", "value",
                 "seconds", "ms/spp", "cpu ms/spp", "Mpaths/s", "rel. MSE", "its noise", "excess",
                 "tone RMSE", "brightness", "discarded");
-    render::RenderSettings defaults;
+    settings::RenderSettings defaults;
     defaults.seed = options.seed;
     // The same in every sweep: rendered once. With the same seed, a setting that leaves the
     // image bit for bit the same does nothing in this scene (MIS without sphere lights,
@@ -311,7 +311,7 @@ void measureSettings(const scene::Scene& scene, const Reference& reference,
                 options.settingNames.end())
             continue;
         for (const SettingValue& value : sweep.values) {
-            render::RenderSettings settings = defaults;
+            settings::RenderSettings settings = defaults;
             value.apply(settings);
             const bool isDefault = sameSettings(settings, defaults);
             const SettingRun result =
@@ -349,7 +349,7 @@ void measureEqualTime(const scene::Scene& scene, const Reference& reference,
                       const Options& options, CsvFile& csv)
 {
     const std::string name = sceneName(scene.sourcePath);
-    render::RenderSettings settings;
+    settings::RenderSettings settings;
     settings.seed = options.seed;
     TimedRenderer run(scene, options.budgetWidth, options.budgetHeight, settings,
                       samplesPerFrameFor(options, options.budgetWidth, options.budgetHeight));

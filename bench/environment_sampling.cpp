@@ -35,7 +35,7 @@ struct Render {
 
 Render renderScene(const scene::Scene& scene, int width, int height, int samples, std::uint64_t seed)
 {
-    render::RenderSettings settings;
+    settings::RenderSettings settings;
     settings.seed = seed;
     settings.secondsPerBand = 0.0;
     render::ProgressiveRenderer renderer(scene, width, height, settings);

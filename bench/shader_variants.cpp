@@ -41,10 +41,10 @@ double median(std::vector<double> values)
 
 // One renderer's first frame (one sample per pixel, with the driver's code generation),
 // then frames of `samplesPerFrame` paths per pixel until `seconds` have passed.
-Measurement measure(const scene::Scene& scene, render::ShaderVariant variant, int width,
+Measurement measure(const scene::Scene& scene, settings::ShaderVariant variant, int width,
                     int height, int samplesPerFrame, double seconds, bool rayCulling = true)
 {
-    render::RenderSettings settings;
+    settings::RenderSettings settings;
     settings.variant = variant;
     settings.rayCulling = rayCulling;
     settings.secondsPerBand = 0.0;
@@ -137,23 +137,23 @@ int main(int argc, char* argv[])
             specialCompile, generalFirst, specialFirst, featuresRate, shapesRate;
         for (int r = 0; r < repeats; ++r) {
             if (breakdown) {
-                featuresRate.push_back(measure(scene, render::ShaderVariant::FeaturesOnly,
+                featuresRate.push_back(measure(scene, settings::ShaderVariant::FeaturesOnly,
                                                width, height, samplesPerFrame, seconds)
                                            .megapathsPerSecond);
                 shapesRate.push_back(
-                    measure(scene, render::ShaderVariant::ShapesOnly, width, height,
+                    measure(scene, settings::ShaderVariant::ShapesOnly, width, height,
                             samplesPerFrame, seconds)
                         .megapathsPerSecond);
             }
             // Interleaved so that load from elsewhere on the machine hits both alike.
             const Measurement general =
-                measure(scene, render::ShaderVariant::General, width, height, samplesPerFrame,
+                measure(scene, settings::ShaderVariant::General, width, height, samplesPerFrame,
                         seconds);
             const Measurement special =
-                measure(scene, render::ShaderVariant::Specialized, width, height, samplesPerFrame,
+                measure(scene, settings::ShaderVariant::Specialized, width, height, samplesPerFrame,
                         seconds);
             const Measurement unculled =
-                measure(scene, render::ShaderVariant::Specialized, width, height, samplesPerFrame,
+                measure(scene, settings::ShaderVariant::Specialized, width, height, samplesPerFrame,
                         seconds, false);
             generalRate.push_back(general.megapathsPerSecond);
             unculledRate.push_back(unculled.megapathsPerSecond);

@@ -91,7 +91,7 @@ def predictions(run):
 
 def uneven(stats):
     """mean(s^2) / mean(s)^2 of the per-sample variance: how many times fewer samples ideal
-    adaptive sampling needs than uniform sampling (render/AdaptiveSampling.h)."""
+    adaptive sampling needs than uniform sampling (film/AdaptiveSampling.h)."""
     variance = stats[..., 2] * stats[..., 0]
     return variance.mean() / np.sqrt(variance).mean() ** 2
 
@@ -244,7 +244,7 @@ def main():
                "final target, samples nearly every pixel until the quiet ones hold their "
                "share, so at equal time before that it is about as good as uniform). "
                "mean(s²)/mean(s)² is how uneven the noise is: the factor by which ideal "
-               "per-pixel allocation cuts the samples (render/AdaptiveSampling.h); the time "
+               "per-pixel allocation cuts the samples (film/AdaptiveSampling.h); the time "
                "gain is smaller because the noisy pixels are also the slow ones (glass, "
                "caustics: the Mpaths/s of an adaptive render is 0.5–0.9x a uniform one's).", "",
                table(header, rows), "",
@@ -254,7 +254,7 @@ def main():
                "from the second moments the renderer accumulates anyway (Welford); their mean "
                "over pixels and channels, square-rooted and divided by the image's mean, is the "
                "expected rel RMSE against the converged image "
-               "(`src/render/ConvergenceEstimate.h`). The estimate is itself noisy, and "
+               "(`src/film/ConvergenceEstimate.h`). The estimate is itself noisy, and "
                "heavy-tailed where rare bright paths are: its standard deviation is taken from "
                "how much neighbouring pixels' s²/n differ (half their mean squared difference "
                "bounds one pixel's scatter), carried through the square root, with the mean "
@@ -266,7 +266,7 @@ def main():
                "Adaptive sampling gives pixel p a share of samples in proportion to its "
                "standard deviation, n_p = s_p · mean(s) / (E · mean radiance)², the allocation "
                "that reaches the target with the fewest samples "
-               "(`src/render/AdaptiveSampling.h`). The s_p are themselves estimates: a pixel "
+               "(`src/film/AdaptiveSampling.h`). The s_p are themselves estimates: a pixel "
                "whose own samples understate its noise would stop early with an error the "
                "image's estimate, made from the same samples, does not see. So the share "
                "follows the larger of s_p and the mean s of p's 3x3 neighbourhood, with the "

@@ -43,7 +43,7 @@ struct WorkPerPath {
 };
 
 WorkPerPath countWork(const scene::Scene& scene, int width, int height, int samples,
-                      render::RenderSettings settings, const std::string& dumpPrefix)
+                      settings::RenderSettings settings, const std::string& dumpPrefix)
 {
     settings.profileCounters = true;
     settings.secondsPerBand = 0.0;
@@ -107,7 +107,7 @@ WorkPerPath countWork(const scene::Scene& scene, int width, int height, int samp
 }
 
 double megapathsPerSecond(const scene::Scene& scene, int width, int height, double seconds,
-                          const render::RenderSettings& settings)
+                          const settings::RenderSettings& settings)
 {
     render::ProgressiveRenderer renderer(scene, width, height, settings);
     renderer.renderFrame({}, 1);
@@ -140,7 +140,7 @@ int main(int argc, char* argv[])
 {
     int width = 400, height = 300, profileSamples = 8;
     double seconds = 6.0;
-    render::RenderSettings settings;
+    settings::RenderSettings settings;
     std::vector<std::string> scenes;
     std::string dumpPrefix;
     for (int i = 1; i < argc; ++i) {
@@ -158,8 +158,8 @@ int main(int argc, char* argv[])
             settings.rayCulling = false;
         } else if (argument == "--sampler" && i + 1 < argc) {
             settings.sampler = std::string(argv[++i]) == "independent"
-                                   ? render::SamplerKind::Independent
-                                   : render::SamplerKind::Sobol;
+                                   ? settings::SamplerKind::Independent
+                                   : settings::SamplerKind::Sobol;
         } else if (!argument.empty() && argument[0] == '-') {
             usage();
         } else {

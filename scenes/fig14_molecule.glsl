@@ -2,7 +2,7 @@
 // seed wrote it, in GLSL: four atoms of radius 0.5 at the corners of a tetrahedron, every
 // pair joined by a bond of radius 0.175, all blended by the seed's exponential smooth
 // minimum -log(e^(-k a) + e^(-k b)) / k with k = 9, as fig14-smooth-csg-cornell.in blends
-// them in CSG syntax; turned to show all four atoms. shaders/lattice.glsl is the same solid
+// them in CSG syntax; turned to show all four atoms. scenes/sdf/lattice.glsl is the same solid
 // with the polynomial smooth minimum, for classic scene 6.
 // A bound, 1-Lipschitz: the gradient of the smooth minimum is a convex combination of its
 // operands' gradients. The smooth minimum swells the solid by at most log(7) / k = 0.22

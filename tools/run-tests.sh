@@ -24,7 +24,7 @@ if [ "${RAYTRACER_SKIP_SANITIZER:-0}" != 1 ]; then
     echo "run-tests: the GL-free tests again under AddressSanitizer and UndefinedBehaviorSanitizer (build-sanitize/)"
     cd "$root"
     cmake --preset sanitize >/dev/null
-    cmake --build build-sanitize --parallel --target scene_tests io_tests generator_tests \
-        scale_out_tests interaction_tests scene_fuzz_replay
+    cmake --build build-sanitize --parallel --target scene_tests io_tests shadergen_tests \
+        film_tests interaction_tests scene_fuzz_replay
     ctest --preset sanitize
 fi

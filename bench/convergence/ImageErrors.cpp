@@ -1,7 +1,6 @@
 #include "convergence/ImageErrors.h"
 
-#include "render/ToneCurve.h"
-#include "render/ToneMapper.h"
+#include "film/ToneCurve.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -11,10 +10,10 @@ namespace convergence {
 namespace {
 
 // Displayed value of one channel of linear radiance, on the 0..255 scale, unrounded: the
-// display's tone curve (render/ToneCurve.h) in double at the default exposure.
+// display's tone curve (film/ToneCurve.h) in double at the default exposure.
 double displayValue(double radiance)
 {
-    return 255.0 * render::displayValue(radiance, render::ToneMapper::kDefaultExposure);
+    return 255.0 * film::displayValue(radiance, film::ToneCurve::kDefaultExposure);
 }
 
 void requireSameShape(const io::Image& a, const io::Image& b)

@@ -63,12 +63,12 @@ std::string fileBytes(const fs::path& path)
 // assembled for the scene (modules and user SDFs included), the numbers the host packs for
 // it, the texture files, the settings, the size, the spp and the seed. Anything else the host
 // computes at upload time is not covered; --refresh-references re-renders regardless.
-std::string referenceKey(const scene::Scene& parsed, const render::RenderSettings& settings,
+std::string referenceKey(const scene::Scene& parsed, const settings::RenderSettings& settings,
                          int width, int height, int samplesPerPixel)
 {
     const render::PreparedScene prepared = render::prepareScene(
-        parsed, render::shaderBuild(settings), render::defaultShaderDirectory());
-    const render::SceneShaderCode& code = prepared.code;
+        parsed, shadergen::shaderBuild(settings), render::defaultShaderDirectory());
+    const shadergen::SceneShaderCode& code = prepared.code;
     const render::SceneUniforms& uniforms = prepared.uniforms;
     Fnv1a64 hash;
     hash.add("bench_convergence reference 2");
@@ -109,7 +109,7 @@ std::string formatNumber(double value)
     return text;
 }
 
-std::string describeSettings(const render::RenderSettings& s)
+std::string describeSettings(const settings::RenderSettings& s)
 {
     std::ostringstream text;
     text << "hitTolerance=" << formatNumber(s.hitTolerance) << " maxMarchSteps=" << s.maxMarchSteps
@@ -118,7 +118,7 @@ std::string describeSettings(const render::RenderSettings& s)
          << " russianRouletteDepth=" << s.russianRouletteDepth
          << " mis=" << (s.multipleImportanceSampling ? 1 : 0)
          << " fresnel="
-         << (s.dielectricFresnel == render::FresnelModel::Exact ? "exact" : "schlick")
+         << (s.dielectricFresnel == settings::FresnelModel::Exact ? "exact" : "schlick")
          << " variant=" << static_cast<int>(s.variant) << " seed=" << s.seed;
     return text.str();
 }
@@ -131,7 +131,7 @@ std::string sceneName(const fs::path& path)
 Reference obtainReference(const scene::Scene& scene, int width, int height,
                           const ReferenceOptions& options)
 {
-    render::RenderSettings settings;
+    settings::RenderSettings settings;
     settings.seed = options.seed;
     Reference reference;
     reference.samplesPerPixel = options.samplesPerPixel;

@@ -2,7 +2,7 @@
 // bench_convergence's converged references: rendered once with the default settings and a
 // fixed seed, and cached under a key made of everything that decides their pixels.
 #include "convergence/ImageErrors.h"
-#include "render/RenderSettings.h"
+#include "settings/RenderSettings.h"
 #include "scene/Scene.h"
 
 #include <cstdint>
@@ -15,7 +15,7 @@ namespace convergence {
 std::string formatNumber(double value);
 
 // Every setting that decides the image, as text: part of the reference's cache key.
-std::string describeSettings(const render::RenderSettings& settings);
+std::string describeSettings(const settings::RenderSettings& settings);
 
 // The scene file's name without its extension.
 std::string sceneName(const std::filesystem::path& path);

@@ -19,7 +19,7 @@ double processCpuSeconds();
 class TimedRenderer {
 public:
     TimedRenderer(const scene::Scene& scene, int width, int height,
-                  const render::RenderSettings& settings, int samplesPerFrame)
+                  const settings::RenderSettings& settings, int samplesPerFrame)
         : renderer_(scene, width, height, settings), samplesPerFrame_(samplesPerFrame)
     {
         compileSeconds_ = renderer_.compileSeconds();

@@ -208,7 +208,7 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
             line.settings.seed = static_cast<std::uint64_t>(seed);
             line.seedGiven = true;
         } else if (argument == "--no-specialize") {
-            line.settings.variant = render::ShaderVariant::General;
+            line.settings.variant = settings::ShaderVariant::General;
         } else if (argument == "--hit-tolerance") {
             line.settings.hitTolerance =
                 static_cast<float>(positiveDecimal(value(argument), "--hit-tolerance"));
@@ -249,17 +249,17 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
         } else if (argument == "--fresnel") {
             const std::string model = value(argument);
             if (model == "schlick")
-                line.settings.dielectricFresnel = render::FresnelModel::Schlick;
+                line.settings.dielectricFresnel = settings::FresnelModel::Schlick;
             else if (model == "exact")
-                line.settings.dielectricFresnel = render::FresnelModel::Exact;
+                line.settings.dielectricFresnel = settings::FresnelModel::Exact;
             else
                 throw UsageError("--fresnel must be 'schlick' or 'exact', not '" + model + "'");
         } else if (argument == "--sampler") {
             const std::string kind = value(argument);
             if (kind == "sobol")
-                line.settings.sampler = render::SamplerKind::Sobol;
+                line.settings.sampler = settings::SamplerKind::Sobol;
             else if (kind == "independent")
-                line.settings.sampler = render::SamplerKind::Independent;
+                line.settings.sampler = settings::SamplerKind::Independent;
             else
                 throw UsageError("--sampler must be 'sobol' or 'independent', not '" + kind +
                                  "'");

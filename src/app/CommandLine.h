@@ -1,6 +1,6 @@
 #pragma once
-#include "render/AdaptiveSampling.h"
-#include "render/RenderSettings.h"
+#include "film/AdaptiveSampling.h"
+#include "settings/RenderSettings.h"
 
 #include <filesystem>
 #include <optional>
@@ -27,10 +27,10 @@ struct CommandLine {
     int height = 480;
     std::optional<double> seconds;   // timed render
     std::optional<int> samplesPerPixel;
-    // --target-error E: stop once the estimated relative RMSE is E (render/AdaptiveSampling.h
+    // --target-error E: stop once the estimated relative RMSE is E (film/AdaptiveSampling.h
     // holds it with --min-spp and --adaptive-tile); --uniform-sampling: every pixel alike.
     std::optional<double> targetError;
-    render::AdaptiveSampling adaptiveSampling;
+    film::AdaptiveSampling adaptiveSampling;
     bool uniformSampling = false;
     std::optional<std::filesystem::path> output;
     std::optional<std::filesystem::path> statisticsOutput;
@@ -38,7 +38,7 @@ struct CommandLine {
     // --samples-per-frame was given: keep it; otherwise the render picks it (RenderCommand).
     bool samplesPerFrameGiven = false;
     bool quiet = false;
-    render::RenderSettings settings;
+    settings::RenderSettings settings;
     // WIDTH HEIGHT and --seed were given (a resumed render takes the file's otherwise).
     bool sizeGiven = false;
     bool seedGiven = false;

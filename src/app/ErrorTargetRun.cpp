@@ -14,7 +14,7 @@ constexpr double kPlanningMargin = 0.97;
 
 }  // namespace
 
-ErrorTargetRun::ErrorTargetRun(const render::AdaptiveSampling& sampling, bool adaptive)
+ErrorTargetRun::ErrorTargetRun(const film::AdaptiveSampling& sampling, bool adaptive)
     : sampling_(sampling), adaptive_(adaptive)
 {
 }
@@ -25,16 +25,16 @@ void ErrorTargetRun::start(render::ProgressiveRenderer& renderer)
     noteSamplesAdded(renderer.accumulation());
     if (adaptive_)
         renderer.setTileSampleTargets(
-            render::planAdaptiveSampling(render::Accumulation(renderer.width(), renderer.height()),
+            film::planAdaptiveSampling(film::Accumulation(renderer.width(), renderer.height()),
                                          sampling_)
                 .targets);
 }
 
 // Estimates the error `accumulation` holds; true when every pixel holds the minimum.
-bool ErrorTargetRun::judge(const render::Accumulation& accumulation)
+bool ErrorTargetRun::judge(const film::Accumulation& accumulation)
 {
-    estimate_ = render::estimateRelativeError(accumulation);
-    const render::SampleCountSpan span = render::samplesTakenSpan(accumulation);
+    estimate_ = film::estimateRelativeError(accumulation);
+    const film::SampleCountSpan span = film::samplesTakenSpan(accumulation);
     const bool minimumHeld = span.fewest >= std::min(sampling_.minimumSamples,
                                                      sampling_.sampleLimit > 0
                                                          ? sampling_.sampleLimit
@@ -43,7 +43,7 @@ bool ErrorTargetRun::judge(const render::Accumulation& accumulation)
     return minimumHeld;
 }
 
-void ErrorTargetRun::noteSamplesAdded(const render::Accumulation& accumulation)
+void ErrorTargetRun::noteSamplesAdded(const film::Accumulation& accumulation)
 {
     const std::size_t pixels = static_cast<std::size_t>(accumulation.width()) * accumulation.height();
     if (samplesTakenBefore_.size() != pixels)
@@ -65,7 +65,7 @@ void ErrorTargetRun::conclude(const render::ProgressiveRenderer& renderer)
 
 void ErrorTargetRun::afterFrame(render::ProgressiveRenderer& renderer, double elapsedSeconds)
 {
-    const render::Accumulation accumulation = renderer.accumulation();
+    const film::Accumulation accumulation = renderer.accumulation();
     const bool minimumHeld = judge(accumulation);
     noteSamplesAdded(accumulation);
 
@@ -74,24 +74,24 @@ void ErrorTargetRun::afterFrame(render::ProgressiveRenderer& renderer, double el
     // plan made after two samples sent scene 5's pixels to 64-2000 samples, for an error
     // 0.77 of the target).
     if (estimate_ && !reached_ && minimumHeld) {
-        render::AdaptiveSampling aim = sampling_;
+        film::AdaptiveSampling aim = sampling_;
         // What the estimate's uncertainty asks beyond the target, and the margin.
         aim.targetError = kPlanningMargin * sampling_.targetError *
                           estimate_->relativeError / std::max(estimate_->upperBound(), 1e-30);
         if (adaptive_) {
-            render::AdaptivePlan plan = render::planAdaptiveSampling(accumulation, aim);
+            film::AdaptivePlan plan = film::planAdaptiveSampling(accumulation, aim);
             // Every tile holds its share but the estimate is not there: the noise grew as it
             // was sampled (a bright path found late). Aim lower until a tile has work, or
             // every pixel holds the limit.
             for (int tries = 0; plan.activeTiles == 0 && tries < 40; ++tries) {
                 aim.targetError *= 0.9;
-                plan = render::planAdaptiveSampling(accumulation, aim);
+                plan = film::planAdaptiveSampling(accumulation, aim);
             }
             limitReached_ = plan.activeTiles == 0;
             renderer.setTileSampleTargets(plan.targets);
         }
     } else if (!estimate_ && adaptive_) {
-        renderer.setTileSampleTargets(render::planAdaptiveSampling(accumulation, sampling_).targets);
+        renderer.setTileSampleTargets(film::planAdaptiveSampling(accumulation, sampling_).targets);
     }
 
     predictedSecondsLeft_.reset();

@@ -1,7 +1,7 @@
 #pragma once
-#include "app/ConvergenceHistory.h"
-#include "render/AdaptiveSampling.h"
-#include "render/ConvergenceEstimate.h"
+#include "interaction/ConvergenceHistory.h"
+#include "film/AdaptiveSampling.h"
+#include "film/ConvergenceEstimate.h"
 #include "render/ProgressiveRenderer.h"
 
 #include <optional>
@@ -11,11 +11,11 @@
 namespace app {
 
 // A render aimed at an error (--target-error): after every frame it estimates the error
-// reached (render/ConvergenceEstimate.h), sends the next samples where the error is
-// (render/AdaptiveSampling.h; unless sampling uniformly) and predicts the time still needed.
+// reached (film/ConvergenceEstimate.h), sends the next samples where the error is
+// (film/AdaptiveSampling.h; unless sampling uniformly) and predicts the time still needed.
 class ErrorTargetRun {
 public:
-    ErrorTargetRun(const render::AdaptiveSampling& sampling, bool adaptive);
+    ErrorTargetRun(const film::AdaptiveSampling& sampling, bool adaptive);
 
     // Before the first frame: every pixel's first aim is the minimum.
     void start(render::ProgressiveRenderer& renderer);
@@ -32,8 +32,8 @@ public:
     // Adaptive sampling with a sample limit (--spp) has no pixel left to sample: every one
     // holds the limit, or its tile's share.
     bool limitReached() const { return limitReached_; }
-    const std::optional<render::ErrorEstimate>& estimate() const { return estimate_; }
-    // Seconds still needed, from the trend of the estimate so far (ConvergenceHistory);
+    const std::optional<film::ErrorEstimate>& estimate() const { return estimate_; }
+    // Seconds still needed, from the trend of the estimate so far (interaction::ConvergenceHistory);
     // nothing before every pixel holds the minimum.
     std::optional<double> predictedSecondsLeft() const { return predictedSecondsLeft_; }
     bool adaptive() const { return adaptive_; }
@@ -41,7 +41,7 @@ public:
     // asked for N samples lasts as long as its busiest pixels take theirs, which stop at
     // their shares: N alone overstates what the frame did and understates a sample's cost.
     float mostSamplesAddedToAPixel() const { return mostSamplesAdded_; }
-    const render::AdaptiveSampling& sampling() const { return sampling_; }
+    const film::AdaptiveSampling& sampling() const { return sampling_; }
 
     // "error 2.31 % (target 1 %), about 14 s left", for the progress line.
     std::string progressText() const;
@@ -50,14 +50,14 @@ public:
     std::string summaryText(const std::string& stop) const;
 
 private:
-    bool judge(const render::Accumulation& accumulation);
-    void noteSamplesAdded(const render::Accumulation& accumulation);
+    bool judge(const film::Accumulation& accumulation);
+    void noteSamplesAdded(const film::Accumulation& accumulation);
 
-    render::AdaptiveSampling sampling_;
+    film::AdaptiveSampling sampling_;
     bool adaptive_;
-    std::optional<render::ErrorEstimate> estimate_;
+    std::optional<film::ErrorEstimate> estimate_;
     std::optional<double> predictedSecondsLeft_;
-    ConvergenceHistory history_;
+    interaction::ConvergenceHistory history_;
     bool reached_ = false;
     bool limitReached_ = false;
     std::vector<float> samplesTakenBefore_;  // each pixel's, row by row, after the last frame

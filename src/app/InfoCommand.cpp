@@ -2,7 +2,7 @@
 
 #include "app/RenderCommand.h"
 #include "io/ImageFile.h"
-#include "render/RenderMetadata.h"
+#include "film/RenderMetadata.h"
 
 #include <algorithm>
 #include <cmath>
@@ -53,8 +53,8 @@ std::string perPixelSamples(const io::ImageFileContents& file)
 int runInfo(const std::filesystem::path& path)
 {
     const io::ImageFileContents file = io::readImageFile(path);
-    const std::optional<render::RenderMetadata> metadata =
-        render::metadataFromAttributes(file.attributes, path.string());
+    const std::optional<film::RenderMetadata> metadata =
+        film::metadataFromAttributes(file.attributes, path.string());
     if (!metadata)
         throw std::runtime_error(path.string() + " holds no metadata of this program (" +
                                  file.format + "; PPM, PFM, HDR, JPEG and TIFF files hold none)");
@@ -68,16 +68,16 @@ int runInfo(const std::filesystem::path& path)
     printLine("channels", channels);
     printLine("scene", metadata->sceneFile);
     printLine("scene SHA-256", metadata->sceneSha256);
-    printLine("camera", render::formatCamera(metadata->camera));
+    printLine("camera", film::formatCamera(metadata->camera));
     std::string samples = std::to_string(metadata->samplesPerPixel) + " per pixel";
     const std::string pixels = perPixelSamples(file);
     if (!pixels.empty())
         samples += "; " + pixels;
     printLine("samples", samples);
-    printLine("seeds", render::describeSeeds(metadata->sampleRanges));
+    printLine("seeds", film::describeSeeds(metadata->sampleRanges));
     std::string ranges;
-    for (const render::SampleRange& range : metadata->sampleRanges)
-        ranges += (ranges.empty() ? "" : "; ") + render::describeSampleRange(range);
+    for (const film::SampleRange& range : metadata->sampleRanges)
+        ranges += (ranges.empty() ? "" : "; ") + film::describeSampleRange(range);
     printLine("sample ranges", ranges);
     char seconds[64];
     std::snprintf(seconds, sizeof seconds, "%.2f s%s", metadata->renderSeconds,
@@ -90,8 +90,8 @@ int runInfo(const std::filesystem::path& path)
             files += (files.empty() ? "" : ", ") + name;
         printLine("merged from", files);
     }
-    printLine("program", render::describeProgram(*metadata));
-    for (const render::ImageSetting& setting : render::imageSettings())
+    printLine("program", film::describeProgram(*metadata));
+    for (const film::ImageSetting& setting : film::imageSettings())
         printLine(setting.label, setting.text(metadata->settings) + "  (" + setting.option + ")");
     return kExitSuccess;
 }

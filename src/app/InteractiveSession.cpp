@@ -1,11 +1,11 @@
 #include "app/InteractiveSession.h"
 
-#include "app/FramePacing.h"
+#include "interaction/FramePacing.h"
 #include "app/RenderOutputs.h"
 #include "app/SceneDigest.h"
 #include "app/SceneLoading.h"
 #include "app/Snapshot.h"
-#include "render/ConvergenceEstimate.h"
+#include "film/ConvergenceEstimate.h"
 #include "scene/SceneBounds.h"
 
 #include <algorithm>
@@ -98,7 +98,7 @@ bool InteractiveSession::run()
     Clock::time_point lastWatch = start;
     Clock::time_point lastEstimate = start;
     std::optional<double> relativeError;
-    SamplesPerFrame pacing(line_.settings.samplesPerFrame, line_.samplesPerFrameGiven,
+    interaction::SamplesPerFrame pacing(line_.settings.samplesPerFrame, line_.samplesPerFrameGiven,
                            kTargetFrameSeconds);
     bool settingsChanged = false;
     bool reached = false;
@@ -140,7 +140,7 @@ bool InteractiveSession::run()
         const bool settling = secondsBetween(lastViewChange_, now) < kSettleSeconds;
         if (viewChanged) {
             if (previewFrameSeconds_ == 0.0 && renderer_.lastSecondsPerSample() > 0.0)
-                previewDivisor_ = firstPreviewDivisor(renderer_.lastSecondsPerSample());
+                previewDivisor_ = interaction::firstPreviewDivisor(renderer_.lastSecondsPerSample());
             renderer_.renderPreview(previewDivisor_, kPreviewBounces);
         } else if (renderer_.showsPreview() && (settling || dragging)) {
             // The view may go on changing: keep the preview, and do not spin.
@@ -168,7 +168,7 @@ bool InteractiveSession::run()
         if (!renderer_.showsPreview() && renderer_.samplesPerPixel() >= 2 &&
             secondsBetween(lastEstimate, Clock::now()) >= kEstimateIntervalSeconds) {
             lastEstimate = Clock::now();
-            const auto estimate = render::estimateRelativeError(renderer_.accumulation());
+            const auto estimate = film::estimateRelativeError(renderer_.accumulation());
             relativeError.reset();
             if (estimate)
                 relativeError = estimate->relativeError;
@@ -188,7 +188,7 @@ bool InteractiveSession::run()
         settingsChanged = showFrame(relativeError);
         if (viewChanged) {
             const double frameSeconds = secondsBetween(now, Clock::now());
-            previewDivisor_ = nextPreviewDivisor(previewDivisor_, frameSeconds);
+            previewDivisor_ = interaction::nextPreviewDivisor(previewDivisor_, frameSeconds);
             // Smoothed over about ten frames, for the title and the panel.
             previewFrameSeconds_ = previewFrameSeconds_ > 0.0
                                        ? 0.9 * previewFrameSeconds_ + 0.1 * frameSeconds
@@ -232,10 +232,10 @@ bool InteractiveSession::answerInput(const platform::WindowInput& input, double 
             camera_.fly(direction, static_cast<float>(seconds), input.shiftHeld);
         }
     }
-    return !render::sameCamera(before, camera_.camera());
+    return !scene::sameCamera(before, camera_.camera());
 }
 
-bool InteractiveSession::applyPanelSettings(const PanelSettings& tuned)
+bool InteractiveSession::applyPanelSettings(const interaction::PanelSettings& tuned)
 {
     if (tuned == panelSettings_)
         return false;
@@ -246,7 +246,7 @@ bool InteractiveSession::applyPanelSettings(const PanelSettings& tuned)
     panelSettings_ = tuned;
     if (!viewChanged)
         return false;
-    render::RenderSettings settings = renderer_.settings();
+    settings::RenderSettings settings = renderer_.settings();
     settings.hitTolerance = tuned.hitTolerance;
     settings.maxBounces = tuned.maxBounces;
     settings.environmentLight = tuned.environment;
@@ -279,7 +279,7 @@ bool InteractiveSession::reloadChangedFiles()
         scene::Scene edited = loadScene(line_.scene);
         std::string editedSha256 = app::sceneSha256(filesOfScene(line_.scene, edited));
         const Clock::time_point loaded = Clock::now();
-        render::CameraController camera = camera_;
+        interaction::CameraController camera = camera_;
         camera.setHome(edited.camera, sceneRadius(edited),
                        render::cameraLinesChanged(fileScene_.camera, edited.camera));
         scene::Scene shown = edited;
@@ -334,7 +334,7 @@ void InteractiveSession::save()
     const SnapshotFiles files =
         snapshotFiles(line_.scene, renderer_.samplesPerPixel(), line_.output);
     try {
-        render::RenderMetadata metadata = describeRender(line_.scene, sceneSha256_, renderer_);
+        film::RenderMetadata metadata = describeRender(line_.scene, sceneSha256_, renderer_);
         metadata.renderSeconds = secondsBetween(accumulationStart_, Clock::now());
         writeSnapshot(renderer_, files, metadata);
         setStatus("saved " + files.picture.string() + " and " + files.radiance.string(), false);
@@ -368,7 +368,7 @@ bool InteractiveSession::showFrame(const std::optional<double>& relativeError)
         return false;
     }
     renderer_.displayToWindow(size.width, size.height);
-    PanelReadings readings;
+    interaction::PanelReadings readings;
     readings.width = renderer_.width();
     readings.height = renderer_.height();
     readings.samplesPerPixel = renderer_.samplesPerPixel();
@@ -386,7 +386,7 @@ bool InteractiveSession::showFrame(const std::optional<double>& relativeError)
     readings.features = renderer_.features().describe();
     readings.status = status_;
     readings.statusIsError = statusIsError_;
-    const PanelSettings tuned = panel_.draw(readings, panelSettings_);
+    const interaction::PanelSettings tuned = panel_.draw(readings, panelSettings_);
     window_.present();
     if (secondsBetween(lastTitle_, Clock::now()) >= kTitleIntervalSeconds) {
         window_.setTitle(title());

@@ -1,11 +1,11 @@
 #pragma once
 #include "app/CommandLine.h"
-#include "app/ConvergenceHistory.h"
-#include "app/FileWatcher.h"
+#include "interaction/ConvergenceHistory.h"
+#include "interaction/FileWatcher.h"
 #include "app/Interrupt.h"
-#include "app/StatisticsPanel.h"
+#include "interaction/StatisticsPanel.h"
 #include "platform/GlfwWindowContext.h"
-#include "render/CameraController.h"
+#include "interaction/CameraController.h"
 #include "render/ProgressiveRenderer.h"
 #include "scene/Scene.h"
 
@@ -16,7 +16,7 @@
 namespace app {
 
 // The window: it shows the estimate converging and answers the user. The mouse and the
-// keys move the camera (render::CameraController); while the view changes, each frame is
+// keys move the camera (interaction::CameraController); while the view changes, each frame is
 // one cheap sample on a coarse grid, and once it stops the accumulation goes on at full
 // rate. The scene file and the files it names are watched: an edit of values re-uploads
 // uniforms, an edit of structure rebuilds the shader, a broken edit leaves the last good
@@ -48,7 +48,7 @@ private:
     // Moves the camera and acts on keys; true when the view changed.
     bool answerInput(const platform::WindowInput& input, double seconds);
     // Settings tuned in the panel; true when the view changed (exposure does not change it).
-    bool applyPanelSettings(const PanelSettings& tuned);
+    bool applyPanelSettings(const interaction::PanelSettings& tuned);
     // A window of another size renders at that size; true when it changed.
     bool followWindowSize();
     // Reloads the scene when the bytes of one of its files changed; true when the scene on
@@ -68,11 +68,11 @@ private:
     const InterruptWatch& interrupt_;
     scene::Scene fileScene_;  // as last read from the file, its camera the file's
     std::string sceneSha256_;  // of fileScene_'s files, as read
-    render::CameraController camera_;
-    FileWatcher watcher_;
-    StatisticsPanel panel_;
-    PanelSettings panelSettings_;
-    ConvergenceHistory history_;
+    interaction::CameraController camera_;
+    interaction::FileWatcher watcher_;
+    interaction::StatisticsPanel panel_;
+    interaction::PanelSettings panelSettings_;
+    interaction::ConvergenceHistory history_;
     bool targetReached_ = false;               // --target-error
     std::optional<double> secondsToTarget_;    // predicted, from history_
     std::string status_;

@@ -5,7 +5,7 @@
 #include "io/OutputFiles.h"
 #include "platform/ContextFactory.h"
 #include "render/AccumulationTargets.h"
-#include "render/RenderFile.h"
+#include "film/RenderFile.h"
 #include "render/ToneMapper.h"
 #include "scene/FileLookup.h"
 
@@ -41,28 +41,28 @@ void refuseOutputsInOneFile(const MergeRequest& request)
 // Why the inputs cannot be merged, if they cannot: they must estimate one image (size,
 // scene, camera, settings, program build), and hold no sample twice.
 void refuseMismatches(const std::vector<fs::path>& paths,
-                      const std::vector<render::RenderFile>& renders)
+                      const std::vector<film::RenderFile>& renders)
 {
-    const render::RenderMetadata& first = renders.front().metadata;
+    const film::RenderMetadata& first = renders.front().metadata;
     for (std::size_t i = 1; i < renders.size(); ++i)
-        if (const auto difference = render::imageDifference(first, renders[i].metadata))
+        if (const auto difference = film::imageDifference(first, renders[i].metadata))
             throw std::runtime_error(
                 "cannot merge " + paths[0].string() + " and " + paths[i].string() +
                 ": they differ in " + difference->what + ": " + difference->first + " and " +
                 difference->second + ", so their samples estimate different images");
     for (std::size_t i = 0; i < renders.size(); ++i)
         for (std::size_t j = i + 1; j < renders.size(); ++j)
-            if (const auto overlap = render::firstOverlap(renders[i].metadata.sampleRanges,
+            if (const auto overlap = film::firstOverlap(renders[i].metadata.sampleRanges,
                                                           renders[j].metadata.sampleRanges))
                 throw std::runtime_error(
                     "cannot merge " + paths[i].string() + " and " + paths[j].string() +
                     ": both hold samples of seed " + std::to_string(overlap->first.seed) +
-                    " with the same indices (" + render::describeSampleRange(overlap->first) +
-                    "; " + render::describeSampleRange(overlap->second) +
+                    " with the same indices (" + film::describeSampleRange(overlap->first) +
+                    "; " + film::describeSampleRange(overlap->second) +
                     "), the same paths twice: render shards with different --seed");
 }
 
-void refuseInexactCounts(const render::Accumulation& merged)
+void refuseInexactCounts(const film::Accumulation& merged)
 {
     for (int y = 0; y < merged.height(); ++y)
         for (int x = 0; x < merged.width(); ++x)
@@ -72,17 +72,17 @@ void refuseInexactCounts(const render::Accumulation& merged)
                     "the 32-bit float counts hold exactly");
 }
 
-render::RenderMetadata mergedMetadata(const std::vector<fs::path>& paths,
-                                      const std::vector<render::RenderFile>& renders)
+film::RenderMetadata mergedMetadata(const std::vector<fs::path>& paths,
+                                      const std::vector<film::RenderFile>& renders)
 {
-    render::RenderMetadata merged = renders.front().metadata;
+    film::RenderMetadata merged = renders.front().metadata;
     merged.samplesPerPixel = 0;
     merged.renderSeconds = 0.0;
     merged.interrupted.clear();
     merged.mergedFrom.clear();
-    std::vector<render::SampleRange> ranges;
+    std::vector<film::SampleRange> ranges;
     for (std::size_t i = 0; i < renders.size(); ++i) {
-        const render::RenderMetadata& input = renders[i].metadata;
+        const film::RenderMetadata& input = renders[i].metadata;
         merged.samplesPerPixel += input.samplesPerPixel;
         merged.renderSeconds += input.renderSeconds;
         ranges.insert(ranges.end(), input.sampleRanges.begin(), input.sampleRanges.end());
@@ -91,12 +91,12 @@ render::RenderMetadata mergedMetadata(const std::vector<fs::path>& paths,
             merged.interrupted += (merged.interrupted.empty() ? "" : "; ") + paths[i].string() +
                                   ": " + input.interrupted;
     }
-    merged.sampleRanges = render::normalizedRanges(ranges);
+    merged.sampleRanges = film::normalizedRanges(ranges);
     return merged;
 }
 
 // The tone-mapped picture, by the renderer's own display pass in a headless context.
-io::Image toneMappedPicture(const render::Accumulation& accumulation)
+io::Image toneMappedPicture(const film::Accumulation& accumulation)
 {
     platform::ContextRequest request;
     request.headless = true;
@@ -120,22 +120,22 @@ int runMerge(const MergeRequest& request)
         outputs.push_back({*request.statisticsOutput, io::OutputKind::Statistics});
     io::checkOutputsCanBeWritten(outputs);
 
-    std::vector<render::RenderFile> renders;
+    std::vector<film::RenderFile> renders;
     for (const fs::path& input : request.inputs) {
         try {
-            renders.push_back(render::readRenderFile(input));
+            renders.push_back(film::readRenderFile(input));
         } catch (const std::exception& error) {
             throw std::runtime_error(std::string("cannot merge: ") + error.what());
         }
     }
     refuseMismatches(request.inputs, renders);
 
-    std::vector<const render::Accumulation*> parts;
-    for (const render::RenderFile& render : renders)
+    std::vector<const film::Accumulation*> parts;
+    for (const film::RenderFile& render : renders)
         parts.push_back(&render.accumulation);
-    const render::Accumulation merged = render::combineAccumulations(parts);
+    const film::Accumulation merged = film::combineAccumulations(parts);
     refuseInexactCounts(merged);
-    const render::RenderMetadata metadata = mergedMetadata(request.inputs, renders);
+    const film::RenderMetadata metadata = mergedMetadata(request.inputs, renders);
 
     std::vector<fs::path> images = {request.output};
     if (request.picture)
@@ -149,7 +149,7 @@ int runMerge(const MergeRequest& request)
     char seconds[64];
     std::snprintf(seconds, sizeof seconds, "%.2f s of rendering", metadata.renderSeconds);
     std::string line = "merged " + std::to_string(renders.size()) + " renders: " + numbers +
-                       " (seeds " + render::describeSeeds(metadata.sampleRanges) + "), " +
+                       " (seeds " + film::describeSeeds(metadata.sampleRanges) + "), " +
                        seconds + " -> " + request.output.string();
     for (std::size_t i = 1; i < images.size(); ++i)
         line += " and " + images[i].string();

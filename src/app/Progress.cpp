@@ -121,7 +121,7 @@ std::string Progress::summary(int width, int height, int samples, double seconds
     return line;
 }
 
-std::string Progress::adaptiveSummary(int width, int height, render::SampleCountSpan span,
+std::string Progress::adaptiveSummary(int width, int height, film::SampleCountSpan span,
                                       double samplesInAll, double seconds,
                                       unsigned long long discarded)
 {

@@ -1,5 +1,5 @@
 #pragma once
-#include "render/Accumulation.h"
+#include "film/Accumulation.h"
 
 #include <chrono>
 #include <optional>
@@ -28,7 +28,7 @@ public:
                                unsigned long long discarded, int samplesResumed = 0);
     // Where pixels hold different counts (adaptive sampling): "160x120, 87.4 spp on average
     // (32-1024) in 5.02 s: 0.334 Mpaths/s, 0 samples discarded".
-    static std::string adaptiveSummary(int width, int height, render::SampleCountSpan span,
+    static std::string adaptiveSummary(int width, int height, film::SampleCountSpan span,
                                        double samplesInAll, double seconds,
                                        unsigned long long discarded);
 

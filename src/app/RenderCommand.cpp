@@ -2,7 +2,7 @@
 
 #include "app/BuildInfo.h"
 #include "app/ErrorTargetRun.h"
-#include "app/FramePacing.h"
+#include "interaction/FramePacing.h"
 #include "app/InteractiveSession.h"
 #include "app/Interrupt.h"
 #include "app/Progress.h"
@@ -14,7 +14,7 @@
 #include "platform/ContextFactory.h"
 #include "platform/GlfwWindowContext.h"
 #include "render/ProgressiveRenderer.h"
-#include "render/RenderFile.h"
+#include "film/RenderFile.h"
 #include "render/ScenePreparation.h"
 #include "scene/SceneFeatures.h"
 #include "scene/SceneParser.h"
@@ -45,17 +45,17 @@ std::vector<io::OutputRequest> outputRequests(const CommandLine& line)
 // The render --resume goes on from, checked against the one the command line asks for:
 // same size, scene, camera, image-changing settings and program build. `line` takes the
 // file's size and seed where the command line gives none.
-render::RenderFile readResumedRender(CommandLine& line, const scene::Scene& scene,
+film::RenderFile readResumedRender(CommandLine& line, const scene::Scene& scene,
                                      const std::string& sceneSha256)
 {
     const std::filesystem::path& path = *line.resume;
-    render::RenderFile resumed;
+    film::RenderFile resumed;
     try {
-        resumed = render::readRenderFile(path);
+        resumed = film::readRenderFile(path);
     } catch (const std::exception& error) {
         throw std::runtime_error(std::string("cannot resume: ") + error.what());
     }
-    const render::RenderMetadata& held = resumed.metadata;
+    const film::RenderMetadata& held = resumed.metadata;
     if (!line.sizeGiven) {
         line.width = held.width;
         line.height = held.height;
@@ -63,7 +63,7 @@ render::RenderFile readResumedRender(CommandLine& line, const scene::Scene& scen
     if (!line.seedGiven && !held.sampleRanges.empty())
         line.settings.seed = held.sampleRanges.front().seed;
 
-    render::RenderMetadata asked = held;
+    film::RenderMetadata asked = held;
     asked.width = line.width;
     asked.height = line.height;
     asked.sceneSha256 = sceneSha256;
@@ -71,11 +71,11 @@ render::RenderFile readResumedRender(CommandLine& line, const scene::Scene& scen
     asked.settings = line.settings;
     asked.program = programName();
     asked.gitCommit = gitCommit();
-    if (const auto difference = render::imageDifference(held, asked))
+    if (const auto difference = film::imageDifference(held, asked))
         throw std::runtime_error("cannot resume " + path.string() + ": it differs from this "
                                  "render in " + difference->what + ": " + difference->first +
                                  " in the file, " + difference->second + " here");
-    const render::SampleCountSpan span = render::samplesTakenSpan(resumed.accumulation);
+    const film::SampleCountSpan span = film::samplesTakenSpan(resumed.accumulation);
     if (line.samplesPerPixel && span.fewest >= *line.samplesPerPixel)
         throw std::runtime_error(path.string() + " holds " + std::to_string(span.fewest) +
                                  " samples per pixel already: --spp " +
@@ -132,7 +132,7 @@ int runRender(const CommandLine& commandLine)
     // Every texture must be readable before a window opens or a frame is rendered.
     const scene::Scene scene = loadScene(line.scene);
     std::string sceneDigest = sceneSha256(filesOfScene(line.scene, scene));
-    std::optional<render::RenderFile> resumed;
+    std::optional<film::RenderFile> resumed;
     if (line.resume)
         resumed = readResumedRender(line, scene, sceneDigest);
     const bool writesFile = line.isBatch() || line.output.has_value();
@@ -153,7 +153,7 @@ int runRender(const CommandLine& commandLine)
     request.windowTitle = "raytracer - " + line.scene.filename().string();
     const auto setupStart = std::chrono::steady_clock::now();
     auto context = platform::createContext(request);
-    render::RenderSettings settings = line.settings;
+    settings::RenderSettings settings = line.settings;
     // The window's panel switches the environment off without a recompile.
     settings.switchableEnvironment = context->hasWindow();
     render::ProgressiveRenderer renderer(scene, line.width, line.height, settings);
@@ -166,7 +166,7 @@ int runRender(const CommandLine& commandLine)
     if (resumed) {
         renderer.resumeFrom(resumed->accumulation);
         samplesResumed = renderer.samplesPerPixel();
-        fewestResumed = render::samplesTakenSpan(resumed->accumulation).fewest;
+        fewestResumed = film::samplesTakenSpan(resumed->accumulation).fewest;
     }
     const double setupSeconds = secondsSince(setupStart);
 
@@ -190,12 +190,12 @@ int runRender(const CommandLine& commandLine)
         };
         if (errorTarget)
             errorTarget->start(renderer);
-        SamplesPerFrame pacing(line.settings.samplesPerFrame, line.samplesPerFrameGiven, 0.5,
+        interaction::SamplesPerFrame pacing(line.settings.samplesPerFrame, line.samplesPerFrameGiven, 0.5,
                                renderer.samplesAdaptively() ? kMostAdaptiveSamplesPerFrame : 16);
         while (keepGoing()) {
             if (errorTarget && (errorTarget->reached() || errorTarget->limitReached()))
                 break;
-            // Adaptive sampling limits each pixel to --spp itself (render/AdaptiveSampling.h).
+            // Adaptive sampling limits each pixel to --spp itself (film/AdaptiveSampling.h).
             const bool countsUniformSamples = !errorTarget || !errorTarget->adaptive();
             if (countsUniformSamples && line.samplesPerPixel &&
                 renderer.samplesPerPixel() >= *line.samplesPerPixel)
@@ -236,12 +236,12 @@ int runRender(const CommandLine& commandLine)
     // A render with an end (SECONDS or --spp) stopped before it by Ctrl-C or by closing its
     // window is interrupted; a window without an end is meant to be closed.
     const bool interrupted = interrupt.requested() || endedEarly;
-    const render::Accumulation accumulation = renderer.accumulation();
+    const film::Accumulation accumulation = renderer.accumulation();
     std::string summary =
         renderer.samplesAdaptively()
             ? Progress::adaptiveSummary(renderer.width(), renderer.height(),
-                                        render::samplesTakenSpan(accumulation),
-                                        render::samplesTakenInAll(accumulation), renderSeconds,
+                                        film::samplesTakenSpan(accumulation),
+                                        film::samplesTakenInAll(accumulation), renderSeconds,
                                         renderer.discardedSamples())
             : Progress::summary(renderer.width(), renderer.height(), renderer.samplesPerPixel(),
                                 renderSeconds, renderer.discardedSamples(), samplesResumed);
@@ -252,8 +252,8 @@ int runRender(const CommandLine& commandLine)
     // An image without a sample is all black, and a resumed render without a new sample is
     // the file it resumed: neither is written, nor over an older file.
     const bool nothingNew =
-        resumed ? render::samplesTakenInAll(accumulation) <=
-                      render::samplesTakenInAll(resumed->accumulation)
+        resumed ? film::samplesTakenInAll(accumulation) <=
+                      film::samplesTakenInAll(resumed->accumulation)
                 : renderer.samplesPerPixel() == 0;
     if (writesFile && nothingNew) {
         if (!interrupted) {
@@ -286,15 +286,15 @@ int runRender(const CommandLine& commandLine)
                 fromWindow = true;
             }
         }
-        render::RenderMetadata metadata = describeRender(line.scene, sceneDigest, renderer);
+        film::RenderMetadata metadata = describeRender(line.scene, sceneDigest, renderer);
         metadata.renderSeconds = renderSeconds;
         if (resumed) {
             // The new samples of each pixel take the indices from its count on: from the
             // fewest any pixel held to the count all reach.
-            std::vector<render::SampleRange> ranges = resumed->metadata.sampleRanges;
+            std::vector<film::SampleRange> ranges = resumed->metadata.sampleRanges;
             ranges.push_back({line.settings.seed, fewestResumed,
                               renderer.samplesPerPixel() - fewestResumed});
-            metadata.sampleRanges = render::normalizedRanges(ranges);
+            metadata.sampleRanges = film::normalizedRanges(ranges);
             metadata.renderSeconds += resumed->metadata.renderSeconds;
             metadata.mergedFrom = resumed->metadata.mergedFrom;
         }
@@ -324,7 +324,7 @@ int printFeatures(const CommandLine& line)
 {
     const render::PreparedScene prepared =
         render::prepareScene(scene::parseSceneFile(line.scene),
-                             render::shaderBuild(line.settings), render::defaultShaderDirectory());
+                             shadergen::shaderBuild(line.settings), render::defaultShaderDirectory());
     std::cout << prepared.code.features.describe();
     return kExitSuccess;
 }
@@ -333,7 +333,7 @@ int printShader(const CommandLine& line)
 {
     const render::PreparedScene prepared =
         render::prepareScene(scene::parseSceneFile(line.scene),
-                             render::shaderBuild(line.settings), render::defaultShaderDirectory());
+                             shadergen::shaderBuild(line.settings), render::defaultShaderDirectory());
     std::cout << prepared.fragmentSource.text();
     return kExitSuccess;
 }

@@ -3,16 +3,16 @@
 #include "app/BuildInfo.h"
 #include "io/ImageFile.h"
 #include "io/ImageFormats.h"
-#include "render/RenderFile.h"
+#include "film/RenderFile.h"
 
 
 namespace app {
 
-render::RenderMetadata describeRender(const std::filesystem::path& sceneFile,
+film::RenderMetadata describeRender(const std::filesystem::path& sceneFile,
                                       const std::string& sceneSha256,
                                       const render::ProgressiveRenderer& renderer)
 {
-    render::RenderMetadata metadata;
+    film::RenderMetadata metadata;
     metadata.width = renderer.width();
     metadata.height = renderer.height();
     metadata.sceneFile = sceneFile.string();
@@ -22,7 +22,7 @@ render::RenderMetadata describeRender(const std::filesystem::path& sceneFile,
     // The most any pixel holds: with adaptive sampling the counts differ, and each pixel's
     // samples are indices 0 to its count.
     const int most = renderer.samplesAdaptively()
-                         ? render::samplesTakenSpan(renderer.accumulation()).most
+                         ? film::samplesTakenSpan(renderer.accumulation()).most
                          : renderer.samplesPerPixel();
     metadata.samplesPerPixel = most;
     metadata.sampleRanges = {{renderer.settings().seed, 0, most}};
@@ -34,21 +34,21 @@ render::RenderMetadata describeRender(const std::filesystem::path& sceneFile,
 std::vector<io::OutputImage> renderOutputs(
     const std::vector<std::filesystem::path>& images,
     const std::optional<std::filesystem::path>& statistics,
-    const render::Accumulation& accumulation, const render::RenderMetadata& metadata,
+    const film::Accumulation& accumulation, const film::RenderMetadata& metadata,
     const std::function<io::Image()>& picture)
 {
-    const std::vector<io::ImageAttribute> attributes = render::metadataAttributes(metadata);
+    const std::vector<io::ImageAttribute> attributes = film::metadataAttributes(metadata);
     std::vector<io::OutputImage> outputs;
     for (const std::filesystem::path& path : images) {
         if (io::lowerCaseExtension(path) == ".exr")
-            outputs.push_back(render::accumulationOutput(path, accumulation, metadata));
+            outputs.push_back(film::accumulationOutput(path, accumulation, metadata));
         else if (io::holdsLinearRadiance(path))
-            outputs.push_back({path, render::meanRadiance(accumulation), attributes, {}});
+            outputs.push_back({path, film::meanRadiance(accumulation), attributes, {}});
         else
             outputs.push_back({path, picture(), attributes, {}});
     }
     if (statistics)
-        outputs.push_back(render::statisticsOutput(*statistics, accumulation, metadata));
+        outputs.push_back(film::statisticsOutput(*statistics, accumulation, metadata));
     return outputs;
 }
 

@@ -1,9 +1,9 @@
 #pragma once
 // The files a render, a window's save or a merge writes, and what they say of themselves.
 #include "io/OutputFiles.h"
-#include "render/Accumulation.h"
+#include "film/Accumulation.h"
 #include "render/ProgressiveRenderer.h"
-#include "render/RenderMetadata.h"
+#include "film/RenderMetadata.h"
 
 #include <filesystem>
 #include <functional>
@@ -17,18 +17,18 @@ namespace app {
 // `sceneSha256`) by this program: size, camera, settings, and, as for a render from nothing,
 // samplesPerPixel() samples of its seed from index 0. The caller sets what differs (the
 // ranges of a resumed render, the seconds, an interruption).
-render::RenderMetadata describeRender(const std::filesystem::path& sceneFile,
+film::RenderMetadata describeRender(const std::filesystem::path& sceneFile,
                                       const std::string& sceneSha256,
                                       const render::ProgressiveRenderer& renderer);
 
 // Each of `images` in the format its extension names, with `metadata` where the format holds
-// attributes: an EXR holds the radiance and the accumulation (render/RenderFile.h), .pfm and
+// attributes: an EXR holds the radiance and the accumulation (film/RenderFile.h), .pfm and
 // .hdr the radiance, a picture format `picture()` (the tone-mapped picture, made only if one
 // is asked for); then the statistics file, if any. For io::writeAllOrNothing.
 std::vector<io::OutputImage> renderOutputs(
     const std::vector<std::filesystem::path>& images,
     const std::optional<std::filesystem::path>& statistics,
-    const render::Accumulation& accumulation, const render::RenderMetadata& metadata,
+    const film::Accumulation& accumulation, const film::RenderMetadata& metadata,
     const std::function<io::Image()>& picture);
 
 }  // namespace app

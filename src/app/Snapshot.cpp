@@ -19,7 +19,7 @@ SnapshotFiles snapshotFiles(const fs::path& sceneFile, int samplesPerPixel,
 }
 
 void writeSnapshot(const render::ProgressiveRenderer& renderer, const SnapshotFiles& files,
-                   const render::RenderMetadata& metadata)
+                   const film::RenderMetadata& metadata)
 {
     io::writeAllOrNothing(renderOutputs({files.picture, files.radiance}, std::nullopt,
                                         renderer.accumulation(), metadata,

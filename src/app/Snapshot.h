@@ -1,6 +1,6 @@
 #pragma once
 #include "render/ProgressiveRenderer.h"
-#include "render/RenderMetadata.h"
+#include "film/RenderMetadata.h"
 
 #include <filesystem>
 #include <optional>
@@ -21,6 +21,6 @@ SnapshotFiles snapshotFiles(const std::filesystem::path& sceneFile, int samplesP
 // Writes the image the renderer holds as both files, with `metadata` (both complete, or
 // neither); the EXR holds the accumulation too, as a batch render's does.
 void writeSnapshot(const render::ProgressiveRenderer& renderer, const SnapshotFiles& files,
-                   const render::RenderMetadata& metadata);
+                   const film::RenderMetadata& metadata);
 
 }  // namespace app

@@ -45,7 +45,7 @@ AccumulationTargets::AccumulationTargets(int width, int height)
     gl::throwOnGlError("creating the accumulation targets");
 }
 
-AccumulationTargets::AccumulationTargets(const Accumulation& initial)
+AccumulationTargets::AccumulationTargets(const film::Accumulation& initial)
     : width_(initial.width()), height_(initial.height()), sets_([&] {
           const std::vector<float> estimate = texelsOf(initial.estimate);
           const std::vector<float> moments = texelsOf(initial.moments);

@@ -1,7 +1,7 @@
 #pragma once
 #include "gl/Framebuffer.h"
 #include "gl/Texture.h"
-#include "render/Accumulation.h"
+#include "film/Accumulation.h"
 
 #include <array>
 
@@ -17,7 +17,7 @@ class AccumulationTargets {
 public:
     AccumulationTargets(int width, int height);
     // Both sets holding `initial` (a resumed render's accumulation), its size.
-    explicit AccumulationTargets(const Accumulation& initial);
+    explicit AccumulationTargets(const film::Accumulation& initial);
 
     struct Set {
         gl::Texture estimate;

@@ -1,6 +1,6 @@
 #include "render/PathTracerProgram.h"
 
-#include "render/KindDispatchers.h"
+#include "shadergen/KindDispatchers.h"
 
 #include <chrono>
 
@@ -12,7 +12,7 @@ namespace {
 
 const char* const kVersion = "#version 330 core\n";
 
-gl::Program compileAndTime(const std::string& vertex, const ShaderSource& fragment,
+gl::Program compileAndTime(const std::string& vertex, const shadergen::ShaderSource& fragment,
                            double& seconds)
 {
     const auto start = std::chrono::steady_clock::now();
@@ -24,14 +24,14 @@ gl::Program compileAndTime(const std::string& vertex, const ShaderSource& fragme
 
 }  // namespace
 
-ShaderSource assemblePathTracerSource(const SceneShaderCode& code, const fs::path& shaderDirectory)
+shadergen::ShaderSource assemblePathTracerSource(const shadergen::SceneShaderCode& code, const fs::path& shaderDirectory)
 {
     const fs::path modules = shaderDirectory / "modules";
-    ShaderSource source;
+    shadergen::ShaderSource source;
     source.add("<preamble: features of the scene>", kVersion + code.defines);
     auto module = [&](const char* name) { source.addFile(modules / name, shaderDirectory); };
 
-    const bool specialized = specializesShapes(code.variant);
+    const bool specialized = shadergen::specializesShapes(code.variant);
     module("constants.glsl");
     module("work_counters.glsl");
     module("rng.glsl");
@@ -58,9 +58,9 @@ ShaderSource assemblePathTracerSource(const SceneShaderCode& code, const fs::pat
     module("camera.glsl");
     module("fresnel.glsl");
     module("pigments.glsl");
-    source.add("<generated: pigmentColor over the pigment kinds>", pigmentDispatcher());
+    source.add("<generated: pigmentColor over the pigment kinds>", shadergen::pigmentDispatcher());
     module("materials.glsl");
-    source.add("<generated: the BSDF dispatchers over the materials>", materialDispatchers());
+    source.add("<generated: the BSDF dispatchers over the materials>", shadergen::materialDispatchers());
     module("ray_queries.glsl");
     if (code.exactGeometry) {
         source.add("<generated: the scene's exact intersections>", code.exactFunctions);
@@ -70,7 +70,8 @@ ShaderSource assemblePathTracerSource(const SceneShaderCode& code, const fs::pat
     }
     module("environment.glsl");
     module("lights.glsl");
-    source.add("<generated: the dispatchers over the light kinds>", lightDispatchers());
+    source.add("<generated: the dispatchers over the light kinds>",
+               shadergen::lightDispatchers());
     module("direct_lighting.glsl");
     module("integrator.glsl");
     module("path_tracer_main.glsl");
@@ -79,10 +80,10 @@ ShaderSource assemblePathTracerSource(const SceneShaderCode& code, const fs::pat
 
 std::string fullscreenVertexSource(const fs::path& shaderDirectory)
 {
-    return kVersion + readTextFile(shaderDirectory / "modules" / "fullscreen.vert");
+    return kVersion + shadergen::readTextFile(shaderDirectory / "modules" / "fullscreen.vert");
 }
 
-PathTracerProgram::PathTracerProgram(const ShaderSource& fragment, const fs::path& shaderDirectory)
+PathTracerProgram::PathTracerProgram(const shadergen::ShaderSource& fragment, const fs::path& shaderDirectory)
     : program_(compileAndTime(fullscreenVertexSource(shaderDirectory), fragment, compileSeconds_))
 {
 }

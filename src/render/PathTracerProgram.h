@@ -1,7 +1,7 @@
 #pragma once
 #include "gl/Shader.h"
-#include "render/SceneShaderGenerator.h"
-#include "render/ShaderSource.h"
+#include "shadergen/SceneShaderGenerator.h"
+#include "shadergen/ShaderSource.h"
 
 #include <filesystem>
 #include <string>
@@ -11,7 +11,7 @@ namespace render {
 // Assembles the path-tracing fragment shader for a scene from the modules in
 // shaders/modules/ (only those its features need), the scene's user SDF files and the
 // generated scene code; see assemblePathTracerSource for the order.
-ShaderSource assemblePathTracerSource(const SceneShaderCode& code,
+shadergen::ShaderSource assemblePathTracerSource(const shadergen::SceneShaderCode& code,
                                       const std::filesystem::path& shaderDirectory);
 
 // The vertex shader every pass uses: one triangle over the viewport.
@@ -21,7 +21,7 @@ std::string fullscreenVertexSource(const std::filesystem::path& shaderDirectory)
 class PathTracerProgram {
 public:
     // `fragment` as render/ScenePreparation assembles it.
-    PathTracerProgram(const ShaderSource& fragment, const std::filesystem::path& shaderDirectory);
+    PathTracerProgram(const shadergen::ShaderSource& fragment, const std::filesystem::path& shaderDirectory);
 
     const gl::Program& program() const { return program_; }
     double compileSeconds() const { return compileSeconds_; }

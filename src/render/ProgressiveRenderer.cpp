@@ -49,14 +49,14 @@ void checkRenderSize(int width, int height)
 }
 
 ProgressiveRenderer::ProgressiveRenderer(const scene::Scene& scene, int width, int height,
-                                         const RenderSettings& settings)
-    : ProgressiveRenderer(prepareScene(scene, shaderBuild(settings), defaultShaderDirectory()),
+                                         const settings::RenderSettings& settings)
+    : ProgressiveRenderer(prepareScene(scene, shadergen::shaderBuild(settings), defaultShaderDirectory()),
                           width, height, settings)
 {
 }
 
 ProgressiveRenderer::ProgressiveRenderer(PreparedScene prepared, int width, int height,
-                                         const RenderSettings& settings)
+                                         const settings::RenderSettings& settings)
     : settings_(settings),
       scene_(std::move(prepared.visible)),
       code_(std::move(prepared.code)),
@@ -134,7 +134,7 @@ ReloadDecision ProgressiveRenderer::setScene(const scene::Scene& original,
                                              const std::vector<std::filesystem::path>& changedFiles)
 {
     PreparedScene prepared =
-        prepareScene(original, shaderBuild(settings_), defaultShaderDirectory());
+        prepareScene(original, shadergen::shaderBuild(settings_), defaultShaderDirectory());
     const ReloadDecision decision =
         decideReload(code_, uniforms_, prepared.code, prepared.uniforms, changedFiles);
     if (decision.changesNothing)
@@ -178,9 +178,9 @@ void ProgressiveRenderer::setCamera(const scene::Camera& camera)
     clearAccumulation();
 }
 
-void ProgressiveRenderer::setSettings(const RenderSettings& settings)
+void ProgressiveRenderer::setSettings(const settings::RenderSettings& settings)
 {
-    const ShaderVariant variant = settings_.variant;
+    const settings::ShaderVariant variant = settings_.variant;
     const bool switchableEnvironment = settings_.switchableEnvironment;
     settings_ = settings;
     settings_.variant = variant;
@@ -203,7 +203,7 @@ void ProgressiveRenderer::resize(int width, int height)
     uploadAll();
 }
 
-void ProgressiveRenderer::resumeFrom(const Accumulation& accumulation)
+void ProgressiveRenderer::resumeFrom(const film::Accumulation& accumulation)
 {
     if (accumulation.width() != width() || accumulation.height() != height())
         throw std::invalid_argument(
@@ -291,7 +291,7 @@ bool ProgressiveRenderer::renderFrame(const std::function<bool()>& keepGoing, in
     return true;
 }
 
-void ProgressiveRenderer::setTileSampleTargets(const TileSampleTargets& targets)
+void ProgressiveRenderer::setTileSampleTargets(const film::TileSampleTargets& targets)
 {
     if (targets.tileSize < 1 || targets.columns * targets.tileSize < width() ||
         targets.rows * targets.tileSize < height() ||
@@ -401,12 +401,12 @@ io::Image ProgressiveRenderer::radiance() const
 
 io::Image ProgressiveRenderer::sampleStatistics() const
 {
-    return render::sampleStatistics(accumulation());
+    return film::sampleStatistics(accumulation());
 }
 
-Accumulation ProgressiveRenderer::accumulation() const
+film::Accumulation ProgressiveRenderer::accumulation() const
 {
-    Accumulation state;
+    film::Accumulation state;
     state.estimate = readTarget(targets_.previous().estimate, 4);
     state.moments = readTarget(targets_.previous().moments, 4);
     return state;

@@ -1,13 +1,13 @@
 #pragma once
 #include "gl/VertexArray.h"
 #include "io/Image.h"
-#include "render/Accumulation.h"
+#include "film/Accumulation.h"
 #include "render/AccumulationTargets.h"
-#include "render/AdaptiveSampling.h"
+#include "film/AdaptiveSampling.h"
 #include "render/EnvironmentMapTextures.h"
 #include "render/PathTracerProgram.h"
 #include "render/ReloadDecision.h"
-#include "render/RenderSettings.h"
+#include "settings/RenderSettings.h"
 #include "render/ScenePreparation.h"
 #include "render/SceneUniforms.h"
 #include "render/TextureArrayLoader.h"
@@ -33,7 +33,7 @@ public:
     // left out. Throws with a readable message when a shader does not compile,
     // a texture cannot be read, or the size exceeds what the GL supports.
     ProgressiveRenderer(const scene::Scene& scene, int width, int height,
-                        const RenderSettings& settings);
+                        const settings::RenderSettings& settings);
 
     // Adds `samples` samples per pixel (default: settings.samplesPerFrame). The frame is
     // drawn in horizontal bands sized to take about settings.secondsPerBand each (a frame of
@@ -45,11 +45,11 @@ public:
     bool renderFrame(const std::function<bool()>& keepGoing = {}, int samples = 0);
 
     // Adaptive sampling: from the next frame on, each pixel takes samples only up to its
-    // tile's count in `targets` (render/AdaptiveSampling.h), and a tile whose pixels all hold
+    // tile's count in `targets` (film/AdaptiveSampling.h), and a tile whose pixels all hold
     // theirs costs almost nothing. samplesPerPixel() then counts what the frames aimed at,
     // the most a pixel may hold; accumulation() says what each holds. Lifted by
     // clearTileSampleTargets and by anything that restarts the accumulation.
-    void setTileSampleTargets(const TileSampleTargets& targets);
+    void setTileSampleTargets(const film::TileSampleTargets& targets);
     void clearTileSampleTargets() { tileSize_ = 0; }
     bool samplesAdaptively() const { return tileSize_ > 0; }
 
@@ -74,9 +74,9 @@ public:
     // recompile; the accumulation starts again from nothing.
     void setCamera(const scene::Camera& camera);
     // Every setting but the shader's (variant, switchable environment), which stay as built.
-    void setSettings(const RenderSettings& settings);
+    void setSettings(const settings::RenderSettings& settings);
     void resize(int width, int height);
-    const RenderSettings& settings() const { return settings_; }
+    const settings::RenderSettings& settings() const { return settings_; }
     // The camera the image is rendered from.
     const scene::Camera& camera() const { return scene_.camera; }
 
@@ -85,7 +85,7 @@ public:
     // (shaders/modules/sampler.glsl), so the samples added are new ones, never those it
     // holds. samplesPerPixel() becomes the most samples a pixel holds; pixels holding fewer
     // catch up in the next frames. Throws std::invalid_argument for another size.
-    void resumeFrom(const Accumulation& accumulation);
+    void resumeFrom(const film::Accumulation& accumulation);
 
     // One cheap picture while the view keeps changing: one path per pixel for a grid
     // `divisor` times coarser than the image, with at most `maxBounces` bounces. It replaces
@@ -104,8 +104,8 @@ public:
     // Per pixel: r = samples accumulated, g = samples discarded, b = variance of the mean
     // radiance (channel average).
     io::Image sampleStatistics() const;
-    // What every pixel has accumulated (render/Accumulation.h).
-    Accumulation accumulation() const;
+    // What every pixel has accumulated (film/Accumulation.h).
+    film::Accumulation accumulation() const;
     // The two accumulation targets as they are (RGBA each, top row first): in a shader built
     // with profileCounters, the work counted per pixel (shaders/modules/work_counters.glsl).
     std::pair<io::Image, io::Image> accumulationTargets() const;
@@ -128,7 +128,7 @@ public:
 
 private:
     ProgressiveRenderer(PreparedScene prepared, int width, int height,
-                        const RenderSettings& settings);
+                        const settings::RenderSettings& settings);
     void uploadAll();
     void bindEnvironmentTextures() const;
     void generateDriverCode();
@@ -139,9 +139,9 @@ private:
     void clearAccumulation();
     io::Image readTarget(const gl::Texture& texture, int channels) const;
 
-    RenderSettings settings_;
+    settings::RenderSettings settings_;
     scene::Scene scene_;  // without its invisible objects
-    SceneShaderCode code_;
+    shadergen::SceneShaderCode code_;
     SceneUniforms uniforms_;
     std::unique_ptr<PathTracerProgram> program_;
     PigmentTextures pigmentTextures_;

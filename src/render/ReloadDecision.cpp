@@ -1,6 +1,5 @@
 #include "render/ReloadDecision.h"
 
-#include "render/CameraController.h"
 
 #include <algorithm>
 
@@ -43,7 +42,7 @@ std::string withoutCommentLines(const std::string& code)
 
 // Beyond what decides a rebuild: the rest of the code, and the arrays of numbers the code
 // carries for upload (the general variant's shape programs, every shape's parameters).
-bool sameCodeAndArrays(const SceneShaderCode& a, const SceneShaderCode& b)
+bool sameCodeAndArrays(const shadergen::SceneShaderCode& a, const shadergen::SceneShaderCode& b)
 {
     return a.exactGeometry == b.exactGeometry && a.exactFunctions == b.exactFunctions &&
            a.profileCounters == b.profileCounters && a.marchesAnything == b.marchesAnything &&
@@ -55,8 +54,8 @@ bool sameCodeAndArrays(const SceneShaderCode& a, const SceneShaderCode& b)
 
 }  // namespace
 
-ReloadDecision decideReload(const SceneShaderCode& shownCode, const SceneUniforms& shownUniforms,
-                            const SceneShaderCode& editedCode,
+ReloadDecision decideReload(const shadergen::SceneShaderCode& shownCode, const SceneUniforms& shownUniforms,
+                            const shadergen::SceneShaderCode& editedCode,
                             const SceneUniforms& editedUniforms,
                             const std::vector<fs::path>& changedFiles)
 {

@@ -1,5 +1,5 @@
 #pragma once
-#include "render/SceneShaderGenerator.h"
+#include "shadergen/SceneShaderGenerator.h"
 #include "render/SceneUniforms.h"
 #include "scene/Scene.h"
 
@@ -27,9 +27,9 @@ struct ReloadDecision {
 
 // `shown` / `edited`: the code generated for each scene and its numbers laid out as uniforms
 // (whose textureLayers are its texture files in layer order). `changedFiles`: the files whose
-// bytes changed on disk since the shown scene was loaded (app::FileWatcher).
-ReloadDecision decideReload(const SceneShaderCode& shownCode, const SceneUniforms& shownUniforms,
-                            const SceneShaderCode& editedCode,
+// bytes changed on disk since the shown scene was loaded (interaction::FileWatcher).
+ReloadDecision decideReload(const shadergen::SceneShaderCode& shownCode, const SceneUniforms& shownUniforms,
+                            const shadergen::SceneShaderCode& editedCode,
                             const SceneUniforms& editedUniforms,
                             const std::vector<std::filesystem::path>& changedFiles);
 

@@ -6,7 +6,7 @@
 
 namespace render {
 
-PreparedScene prepareScene(const scene::Scene& scene, const ShaderBuild& build,
+PreparedScene prepareScene(const scene::Scene& scene, const shadergen::ShaderBuild& build,
                            const std::filesystem::path& shaderDirectory)
 {
     PreparedScene prepared;

@@ -5,10 +5,10 @@
 // and image files, never GL state): the
 // renderer, `--features`, `--print-shader` and the benchmarks all prepare a scene here, so
 // they all see the same visible scene, features and source.
-#include "render/RenderSettings.h"
-#include "render/SceneShaderGenerator.h"
+#include "settings/RenderSettings.h"
+#include "shadergen/SceneShaderGenerator.h"
 #include "render/SceneUniforms.h"
-#include "render/ShaderSource.h"
+#include "shadergen/ShaderSource.h"
 #include "scene/Scene.h"
 
 #include <filesystem>
@@ -18,14 +18,14 @@ namespace render {
 
 struct PreparedScene {
     scene::Scene visible;      // without its invisible objects (scene/InvisibleObjects.h)
-    SceneShaderCode code;      // code.features: what the shader is built for
+    shadergen::SceneShaderCode code;      // code.features: what the shader is built for
     SceneUniforms uniforms;    // every number the shader reads from the scene
     // The environment map, read and made ready for sampling; nullptr where there is none.
     std::shared_ptr<const EnvironmentMap> environmentMap;
-    ShaderSource fragmentSource;
+    shadergen::ShaderSource fragmentSource;
 };
 
-PreparedScene prepareScene(const scene::Scene& scene, const ShaderBuild& build,
+PreparedScene prepareScene(const scene::Scene& scene, const shadergen::ShaderBuild& build,
                            const std::filesystem::path& shaderDirectory);
 
 // The project's shaders/ folder (FileLookup::dataDirectory()).

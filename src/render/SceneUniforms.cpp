@@ -69,7 +69,7 @@ bool SceneUniforms::operator==(const SceneUniforms& other) const
            environment.rotationDegrees == other.environment.rotationDegrees;
 }
 
-SceneUniforms packSceneUniforms(const Scene& scene, const SceneShaderCode& code,
+SceneUniforms packSceneUniforms(const Scene& scene, const shadergen::SceneShaderCode& code,
                                 const EnvironmentMap* environmentMap)
 {
     SceneUniforms packed;
@@ -148,7 +148,7 @@ SceneUniforms packSceneUniforms(const Scene& scene, const SceneShaderCode& code,
 }
 
 void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
-                    const SceneShaderCode& code, const RenderSettings& settings, int width,
+                    const shadergen::SceneShaderCode& code, const settings::RenderSettings& settings, int width,
                     int height)
 {
     setArray(program, "uShapeParameters", code.shapeParameters);
@@ -188,8 +188,8 @@ void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
     setInt(program, "uRussianRouletteDepth", settings.russianRouletteDepth);
     setInt(program, "uUseMis", settings.multipleImportanceSampling ? 1 : 0);
     setInt(program, "uRayCulling", settings.rayCulling ? 1 : 0);
-    setInt(program, "uExactFresnel", settings.dielectricFresnel == FresnelModel::Exact ? 1 : 0);
-    setInt(program, "uSampler", settings.sampler == SamplerKind::Sobol ? 1 : 0);
+    setInt(program, "uExactFresnel", settings.dielectricFresnel == settings::FresnelModel::Exact ? 1 : 0);
+    setInt(program, "uSampler", settings.sampler == settings::SamplerKind::Sobol ? 1 : 0);
     glUniform1ui(program.uniformLocation("uSphereLightPieces"), uniforms.sphereLightPieces);
     glUniform2ui(program.uniformLocation("uSeed"), static_cast<GLuint>(settings.seed),
                  static_cast<GLuint>(settings.seed >> 32));

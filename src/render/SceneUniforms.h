@@ -1,7 +1,7 @@
 #pragma once
 #include "render/EnvironmentMap.h"
-#include "render/RenderSettings.h"
-#include "render/SceneShaderGenerator.h"
+#include "settings/RenderSettings.h"
+#include "shadergen/SceneShaderGenerator.h"
 #include "scene/Scene.h"
 #include "scene/SceneBounds.h"
 
@@ -42,12 +42,12 @@ struct SceneUniforms {
 
 // `environmentMap`: the scene's map (render/EnvironmentMap.h), whose power its light's
 // selection probability needs; nullptr where the scene has none.
-SceneUniforms packSceneUniforms(const scene::Scene& scene, const SceneShaderCode& code,
+SceneUniforms packSceneUniforms(const scene::Scene& scene, const shadergen::SceneShaderCode& code,
                                 const EnvironmentMap* environmentMap = nullptr);
 
 // Sets every scene and settings uniform of `program` (which must be in use).
 void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
-                    const SceneShaderCode& code, const RenderSettings& settings, int width,
+                    const shadergen::SceneShaderCode& code, const settings::RenderSettings& settings, int width,
                     int height);
 
 }  // namespace render

@@ -3,8 +3,8 @@
 #include "gl/Framebuffer.h"
 #include "gl/GlError.h"
 #include "render/PathTracerProgram.h"
-#include "render/ShaderSource.h"
-#include "render/ToneCurve.h"
+#include "shadergen/ShaderSource.h"
+#include "film/ToneCurve.h"
 
 #include <vector>
 
@@ -12,8 +12,8 @@ namespace render {
 
 ToneMapper::ToneMapper(const std::filesystem::path& shaderDirectory)
     : program_(fullscreenVertexSource(shaderDirectory),
-               "#version 330 core\n" + toneCurveDefines() +
-                   readTextFile(shaderDirectory / "modules" / "tone_map.frag"),
+               "#version 330 core\n" + film::toneCurveDefines() +
+                   shadergen::readTextFile(shaderDirectory / "modules" / "tone_map.frag"),
                "the tone mapper")
 {
 }

@@ -1,4 +1,5 @@
 #pragma once
+#include "film/ToneCurve.h"
 #include "gl/Shader.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
@@ -13,7 +14,7 @@ namespace render {
 class ToneMapper {
 public:
     // The original program's exposure: radiance is multiplied by it before the curve.
-    static constexpr float kDefaultExposure = 4.0f;
+    static constexpr float kDefaultExposure = film::ToneCurve::kDefaultExposure;
 
     explicit ToneMapper(const std::filesystem::path& shaderDirectory);
 

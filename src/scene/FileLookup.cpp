@@ -50,7 +50,7 @@ std::vector<fs::path> FileLookup::textureFolders() const
 
 std::vector<fs::path> FileLookup::shaderFolders() const
 {
-    return {sceneDirectory_, sceneDirectory_ / "shaders", dataDirectory_ / "shaders"};
+    return {sceneDirectory_, sceneDirectory_ / "shaders", dataDirectory_ / "scenes" / "sdf"};
 }
 
 std::optional<fs::path> FileLookup::findTexture(const std::string& name) const

@@ -7,7 +7,7 @@
 namespace scene {
 
 // Where a scene's auxiliary files are found. Texture and user-SDF files are looked up next
-// to the scene file first, then in the project's data folder (textures/, shaders/).
+// to the scene file first, then in the project's data folder (textures/, scenes/sdf/).
 class FileLookup {
 public:
     FileLookup(std::filesystem::path sceneDirectory, std::filesystem::path dataDirectory);

@@ -1,7 +1,7 @@
 #pragma once
 // What the tables of kinds share (primitives, CSG operators, materials, pigments,
 // environments): a kind's code is its place in its table, and the shaders know each code
-// only by a #define generated from the table (render/ShaderCodes.h), never by a number
+// only by a #define generated from the table (shadergen/ShaderCodes.h), never by a number
 // copied into GLSL.
 #include <string>
 

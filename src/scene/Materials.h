@@ -4,7 +4,7 @@
 // for the Lambertian, which every shader has: it is the fallback of the dispatchers), the
 // prefix of its GLSL functions, and whether it scatters into a single direction. The enum,
 // the shaders' codes (MATERIAL_<KIND>, as generated #defines), the feature switches, the
-// shaders' dispatchers over materials (render/KindDispatchers.cpp) and the names in
+// shaders' dispatchers over materials (shadergen/KindDispatchers.cpp) and the names in
 // `--features` all come from this list.
 //
 // Adding a material: a row here, its selection in Finish::material(), and its BSDF in

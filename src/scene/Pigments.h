@@ -4,7 +4,7 @@
 // the solid colour, which every shader has: it is pigmentColor's fallback), and its GLSL
 // colour function. The enum, the parser's words, the shaders' codes (PIGMENT_<KIND>, as
 // generated #defines), the feature switches and the shaders' pigmentColor
-// (render/KindDispatchers.cpp) all come from this list.
+// (shadergen/KindDispatchers.cpp) all come from this list.
 //
 // Adding a pigment: a row here with its reader below it in Pigments.cpp, and its colour
 // function in shaders/modules/pigments.glsl, with the signature the others have (and its

@@ -2,6 +2,12 @@
 
 namespace scene {
 
+bool sameCamera(const Camera& a, const Camera& b)
+{
+    return a.eye == b.eye && a.target == b.target && a.up == b.up &&
+           a.verticalFieldOfViewDegrees == b.verticalFieldOfViewDegrees;
+}
+
 CameraFrame cameraFrame(const Camera& camera)
 {
     // In double: target - eye, and its squared length, can overflow a float for points the

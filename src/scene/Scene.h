@@ -33,6 +33,9 @@ struct CameraFrame {
 };
 CameraFrame cameraFrame(const Camera& camera);
 
+// Two cameras that give the same view.
+bool sameCamera(const Camera& a, const Camera& b);
+
 struct PointLight {
     glm::vec3 position{0.0f};
     glm::vec3 intensity{0.0f};  // radiant intensity I, W/sr per channel

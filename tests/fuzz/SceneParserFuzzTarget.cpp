@@ -2,7 +2,7 @@
 // either parse into a scene that the rest of the GL-free code accepts, or raise a SceneError;
 // anything else (a crash, a sanitizer report, another exception, a camera frame that is not
 // finite) is a finding. The shader generator runs on every scene that parses.
-#include "render/SceneShaderGenerator.h"
+#include "shadergen/SceneShaderGenerator.h"
 #include "scene/FileLookup.h"
 #include "scene/InvisibleObjects.h"
 #include "scene/SceneBounds.h"
@@ -51,6 +51,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     scene::computeSceneBounds(visible);
     scene::sphereLights(visible);
     // The shader generator is the rest of what a scene file reaches without a GL context.
-    render::generateSceneShaderCode(visible, {render::ShaderVariant::Specialized});
+    shadergen::generateSceneShaderCode(visible, {settings::ShaderVariant::Specialized});
     return 0;
 }

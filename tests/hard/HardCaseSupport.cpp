@@ -2,7 +2,7 @@
 
 #include "platform/OsMesaContext.h"
 #include "render/ProgressiveRenderer.h"
-#include "render/ShaderSource.h"
+#include "shadergen/ShaderSource.h"
 #include "scene/FileLookup.h"
 #include "scene/SceneParser.h"
 
@@ -43,7 +43,7 @@ RenderOutput render(const RenderRequest& request)
 
 std::string sceneFile(const std::string& name)
 {
-    return render::readTextFile(std::string(HARD_CASES_DIR) + "/scenes/" + name);
+    return shadergen::readTextFile(std::string(HARD_CASES_DIR) + "/scenes/" + name);
 }
 
 int nonFinitePixels(const io::Image& image)

@@ -2,7 +2,7 @@
 // Rendering and measuring for the torture suite: scenes given as text, rendered headless
 // through OSMesa with the real shader, read back as linear radiance with per-pixel statistics.
 #include "io/Image.h"
-#include "render/RenderSettings.h"
+#include "settings/RenderSettings.h"
 #include "support/RenderRun.h"
 
 #include <cstdint>
@@ -21,7 +21,7 @@ struct RenderRequest {
     int width = 64;
     int height = 48;
     int samplesPerPixel = 16;
-    render::RenderSettings settings;
+    settings::RenderSettings settings;
 };
 
 // Renders in this process's OSMesa context (made on first use). Scene files named in the

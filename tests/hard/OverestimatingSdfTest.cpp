@@ -71,7 +71,7 @@ TEST(OverestimatingSdf, UndeclaredOverestimateTunnelsUnlessStepsAreScaled)
     EXPECT_EQ(centreRadiance(hard::render(request), 8), 0.0);
 }
 
-// The shipped torus knot (shaders/knot.glsl, declaring @lipschitz 2) in classic scene 4, as
+// The shipped torus knot (scenes/sdf/knot.glsl, declaring @lipschitz 2) in classic scene 4, as
 // scenes/scene4.in has it (written out here so that the test depends on the knot only): the
 // blue Blinn-Phong knot before a brick wall under a point light, the default sky behind.
 const char* const kKnotScene = R"(
@@ -110,16 +110,16 @@ solid 0 0 0
 0 0 knot 0 0 -8
 )";
 
-render::RenderSettings conservativeSteps(std::uint64_t seed)
+settings::RenderSettings conservativeSteps(std::uint64_t seed)
 {
-    render::RenderSettings settings;
+    settings::RenderSettings settings;
     settings.stepScale = 0.25f;
     settings.overRelaxation = 1.0f;
     settings.seed = seed;
     return settings;
 }
 
-hard::RenderOutput renderKnot(const std::string& text, const render::RenderSettings& settings,
+hard::RenderOutput renderKnot(const std::string& text, const settings::RenderSettings& settings,
                               int samplesPerPixel)
 {
     hard::RenderRequest request;
@@ -134,7 +134,7 @@ hard::RenderOutput renderKnot(const std::string& text, const render::RenderSetti
 
 TEST(OverestimatingSdf, TorusKnotAtDefaultSettingsMatchesConservativeSteps)
 {
-    render::RenderSettings defaults;
+    settings::RenderSettings defaults;
     defaults.seed = 1;
     const hard::RenderOutput atDefaults = renderKnot(kKnotScene, defaults, 32);
     const hard::RenderOutput conservative = renderKnot(kKnotScene, conservativeSteps(2), 32);
@@ -153,7 +153,7 @@ TEST(OverestimatingSdf, TorusKnotAtDefaultSettingsMatchesConservativeSteps)
 // neighbours, is wholly covered at the default settings too (exactly 0: no ray escaped).
 TEST(OverestimatingSdf, TorusKnotAtDefaultSettingsHasNoHole)
 {
-    render::RenderSettings defaults;
+    settings::RenderSettings defaults;
     defaults.seed = 3;
     const hard::RenderOutput atDefaults = renderKnot(kKnotSilhouetteScene, defaults, 16);
     const hard::RenderOutput conservative =

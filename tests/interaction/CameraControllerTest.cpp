@@ -1,6 +1,6 @@
-// render::CameraController: what each mouse and key action does to the camera, in plain
+// interaction::CameraController: what each mouse and key action does to the camera, in plain
 // values (no GL).
-#include "render/CameraController.h"
+#include "interaction/CameraController.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 namespace interaction_tests {
 namespace {
 
-using render::CameraController;
+using interaction::CameraController;
 
 scene::Camera lookingAtOrigin()
 {
@@ -139,7 +139,7 @@ TEST(CameraController, InputOfNothingLeavesTheCameraExactlyAsItWas)
     controller.pan({0.0f, 0.0f}, 480.0f);
     controller.dolly(0.0f);
     controller.fly({0.0f, 0.0f, 0.0f}, 0.1f, true);
-    EXPECT_TRUE(render::sameCamera(controller.camera(), camera));
+    EXPECT_TRUE(scene::sameCamera(controller.camera(), camera));
 }
 
 TEST(CameraHome, RReturnsToTheFilesCamera)
@@ -147,9 +147,9 @@ TEST(CameraHome, RReturnsToTheFilesCamera)
     CameraController controller(lookingAtOrigin(), 3.0f);
     controller.orbit({100.0f, 50.0f}, 480.0f);
     controller.fly({1.0f, 0.0f, 1.0f}, 0.3f, true);
-    ASSERT_FALSE(render::sameCamera(controller.camera(), lookingAtOrigin()));
+    ASSERT_FALSE(scene::sameCamera(controller.camera(), lookingAtOrigin()));
     controller.returnHome();
-    EXPECT_TRUE(render::sameCamera(controller.camera(), lookingAtOrigin()));
+    EXPECT_TRUE(scene::sameCamera(controller.camera(), lookingAtOrigin()));
 }
 
 TEST(CameraHome, ANewHomeReplacesAMovedCameraOnlyWhenTold)
@@ -161,13 +161,13 @@ TEST(CameraHome, ANewHomeReplacesAMovedCameraOnlyWhenTold)
     edited.eye = {0.0f, 2.0f, 6.0f};
 
     controller.setHome(edited, 3.0f, false);
-    EXPECT_TRUE(render::sameCamera(controller.camera(), moved));
+    EXPECT_TRUE(scene::sameCamera(controller.camera(), moved));
     controller.returnHome();
-    EXPECT_TRUE(render::sameCamera(controller.camera(), edited));
+    EXPECT_TRUE(scene::sameCamera(controller.camera(), edited));
 
     controller.orbit({100.0f, 0.0f}, 480.0f);
     controller.setHome(lookingAtOrigin(), 3.0f, true);
-    EXPECT_TRUE(render::sameCamera(controller.camera(), lookingAtOrigin()));
+    EXPECT_TRUE(scene::sameCamera(controller.camera(), lookingAtOrigin()));
 }
 
 }  // namespace

@@ -9,10 +9,10 @@ namespace interaction_tests {
 namespace {
 
 using render::decideReload;
-using render::EnvironmentBinding;
-using render::generateSceneShaderCode;
+using shadergen::EnvironmentBinding;
+using shadergen::generateSceneShaderCode;
 using render::ReloadDecision;
-using render::ShaderVariant;
+using settings::ShaderVariant;
 using scene_tests::parse;
 namespace fs = std::filesystem;
 

@@ -1,9 +1,9 @@
 // The window session's parts that need no window: which files it watches and how it sees
 // them change, how it paces frames and previews, what it names saved images, and the history
 // behind the convergence plot.
-#include "app/ConvergenceHistory.h"
-#include "app/FileWatcher.h"
-#include "app/FramePacing.h"
+#include "interaction/ConvergenceHistory.h"
+#include "interaction/FileWatcher.h"
+#include "interaction/FramePacing.h"
 #include "app/SceneLoading.h"
 #include "app/Snapshot.h"
 #include "scene/SceneTestSupport.h"
@@ -43,7 +43,7 @@ TEST_F(FileWatcherTest, ReportsEachChangeOnce)
 {
     const fs::path scene = write("scene.in", "one");
     const fs::path other = write("other.glsl", "two");
-    app::FileWatcher watcher;
+    interaction::FileWatcher watcher;
     watcher.watch({scene, other});
     EXPECT_TRUE(watcher.changedFiles().empty()) << "nothing changed yet";
     write("scene.in", "changed and longer");
@@ -54,7 +54,7 @@ TEST_F(FileWatcherTest, ReportsEachChangeOnce)
 TEST_F(FileWatcherTest, AFileThatDisappearsOrAppearsHasChanged)
 {
     const fs::path scene = write("scene.in", "one");
-    app::FileWatcher watcher;
+    interaction::FileWatcher watcher;
     watcher.watch({scene, folder_ / "later.glsl"});
     fs::remove(scene);
     write("later.glsl", "new");
@@ -64,7 +64,7 @@ TEST_F(FileWatcherTest, AFileThatDisappearsOrAppearsHasChanged)
 TEST_F(FileWatcherTest, AFileStillWatchedKeepsItsLastSeenStateAcrossWatch)
 {
     const fs::path scene = write("scene.in", "one");
-    app::FileWatcher watcher;
+    interaction::FileWatcher watcher;
     watcher.watch({scene});
     // Edited while the scene was being reloaded, before the new list is watched.
     write("scene.in", "edited meanwhile");
@@ -75,7 +75,7 @@ TEST_F(FileWatcherTest, AFileStillWatchedKeepsItsLastSeenStateAcrossWatch)
 TEST_F(FileWatcherTest, TouchingAFileOrSavingItUnchangedIsNoChange)
 {
     const fs::path scene = write("scene.in", "one");
-    app::FileWatcher watcher;
+    interaction::FileWatcher watcher;
     watcher.watch({scene});
     fs::last_write_time(scene, fs::last_write_time(scene) + std::chrono::seconds(10));
     EXPECT_TRUE(watcher.changedFiles().empty()) << "touched: a new time, the same bytes";
@@ -89,7 +89,7 @@ TEST_F(FileWatcherTest, TouchingAFileOrSavingItUnchangedIsNoChange)
 TEST_F(FileWatcherTest, NewBytesOfTheSameSizeAreAChange)
 {
     const fs::path scene = write("scene.in", "one");
-    app::FileWatcher watcher;
+    interaction::FileWatcher watcher;
     watcher.watch({scene});
     write("scene.in", "two");
     fs::last_write_time(scene, fs::last_write_time(scene) + std::chrono::seconds(10));
@@ -123,17 +123,17 @@ TEST(SnapshotFiles, AreNamedAfterTheSceneAndTheSamplesInTheCurrentOrOutputFolder
 
 TEST(FramePacing, SamplesPerFrameAimAtTheTargetTimeWithinOneToSixteen)
 {
-    EXPECT_EQ(app::samplesPerFrameFor(0.15, 0.03), 5);
-    EXPECT_EQ(app::samplesPerFrameFor(0.15, 1.0), 1);
-    EXPECT_EQ(app::samplesPerFrameFor(0.15, 1e-5), 16);
-    EXPECT_EQ(app::samplesPerFrameFor(0.15, 0.0), 16);
+    EXPECT_EQ(interaction::samplesPerFrameFor(0.15, 0.03), 5);
+    EXPECT_EQ(interaction::samplesPerFrameFor(0.15, 1.0), 1);
+    EXPECT_EQ(interaction::samplesPerFrameFor(0.15, 1e-5), 16);
+    EXPECT_EQ(interaction::samplesPerFrameFor(0.15, 0.0), 16);
 }
 
 // The first frame includes code generation, so the pacing keeps the setting's value until a
 // second frame has measured a sample's cost.
 TEST(FramePacing, SamplesPerFrameFollowTheCostFromTheSecondFrameOn)
 {
-    app::SamplesPerFrame pacing(1, false, 0.15);
+    interaction::SamplesPerFrame pacing(1, false, 0.15);
     pacing.afterFrame(1, 0.03);
     EXPECT_EQ(pacing.samples(), 1);
     pacing.afterFrame(2, 0.03);
@@ -144,7 +144,7 @@ TEST(FramePacing, SamplesPerFrameFollowTheCostFromTheSecondFrameOn)
 
 TEST(FramePacing, SamplesPerFrameTheUserGaveAreKept)
 {
-    app::SamplesPerFrame pacing(7, true, 0.15);
+    interaction::SamplesPerFrame pacing(7, true, 0.15);
     pacing.afterFrame(2, 0.03);
     pacing.afterFrame(3, 1e-5);
     EXPECT_EQ(pacing.samples(), 7);
@@ -152,7 +152,7 @@ TEST(FramePacing, SamplesPerFrameTheUserGaveAreKept)
 
 TEST(FramePacing, SamplesPerFrameStayWithinTheLoopsMost)
 {
-    app::SamplesPerFrame pacing(1, false, 0.5, 1024);
+    interaction::SamplesPerFrame pacing(1, false, 0.5, 1024);
     pacing.afterFrame(2, 1e-5);
     EXPECT_EQ(pacing.samples(), 1024);
 }
@@ -161,7 +161,7 @@ TEST(FramePacing, SamplesPerFrameStayWithinTheLoopsMost)
 // frame takes at most a tenth of the time predicted to be left, and no less than 0.05 s.
 TEST(FramePacing, FramesAimedAtAnErrorTakeATenthOfThePredictedTimeLeft)
 {
-    app::SamplesPerFrame pacing(1, false, 0.5, 1024);
+    interaction::SamplesPerFrame pacing(1, false, 0.5, 1024);
     pacing.afterFrame(2, 0.001);
     EXPECT_EQ(pacing.samples(), 500) << "no prediction: the loop's 0.5 s";
     pacing.afterFrame(3, 0.001, 2.0);
@@ -174,25 +174,25 @@ TEST(FramePacing, FramesAimedAtAnErrorTakeATenthOfThePredictedTimeLeft)
 
 TEST(FramePacing, ThePreviewGridCoarsensWhenSlowAndRefinesWhenFast)
 {
-    EXPECT_EQ(app::nextPreviewDivisor(2, 0.2), 3);
-    EXPECT_EQ(app::nextPreviewDivisor(3, 0.01), 2);
-    EXPECT_EQ(app::nextPreviewDivisor(3, 0.05), 3) << "inside the band it stays";
-    EXPECT_EQ(app::nextPreviewDivisor(1, 0.001), 1);
-    EXPECT_EQ(app::nextPreviewDivisor(app::kMaxPreviewDivisor, 5.0), app::kMaxPreviewDivisor);
+    EXPECT_EQ(interaction::nextPreviewDivisor(2, 0.2), 3);
+    EXPECT_EQ(interaction::nextPreviewDivisor(3, 0.01), 2);
+    EXPECT_EQ(interaction::nextPreviewDivisor(3, 0.05), 3) << "inside the band it stays";
+    EXPECT_EQ(interaction::nextPreviewDivisor(1, 0.001), 1);
+    EXPECT_EQ(interaction::nextPreviewDivisor(interaction::kMaxPreviewDivisor, 5.0), interaction::kMaxPreviewDivisor);
 }
 
 TEST(FramePacing, TheFirstPreviewGridFollowsTheCostOfAFullSample)
 {
-    EXPECT_EQ(app::firstPreviewDivisor(0.01), 1);
-    EXPECT_EQ(app::firstPreviewDivisor(0.04), 1);
-    EXPECT_EQ(app::firstPreviewDivisor(0.15), 2) << "0.15 / 4 = 0.0375";
-    EXPECT_EQ(app::firstPreviewDivisor(0.5), 4) << "0.5 / 9 > 0.04 >= 0.5 / 16";
-    EXPECT_EQ(app::firstPreviewDivisor(1000.0), app::kMaxPreviewDivisor);
+    EXPECT_EQ(interaction::firstPreviewDivisor(0.01), 1);
+    EXPECT_EQ(interaction::firstPreviewDivisor(0.04), 1);
+    EXPECT_EQ(interaction::firstPreviewDivisor(0.15), 2) << "0.15 / 4 = 0.0375";
+    EXPECT_EQ(interaction::firstPreviewDivisor(0.5), 4) << "0.5 / 9 > 0.04 >= 0.5 / 16";
+    EXPECT_EQ(interaction::firstPreviewDivisor(1000.0), interaction::kMaxPreviewDivisor);
 }
 
 TEST(ConvergenceHistory, KeepsPointsOneSpacingApart)
 {
-    app::ConvergenceHistory history;
+    interaction::ConvergenceHistory history;
     history.add(0.0, 1.0f);
     history.add(0.2, 0.9f);  // too soon
     history.add(0.5, 0.8f);
@@ -202,9 +202,9 @@ TEST(ConvergenceHistory, KeepsPointsOneSpacingApart)
 
 TEST(ConvergenceHistory, WhenFullHalvesItsPointsAndDoublesItsSpacingToSpanEverything)
 {
-    app::ConvergenceHistory history;
-    const std::size_t capacity = app::ConvergenceHistory::kCapacity;
-    const double spacing = app::ConvergenceHistory::kFirstSpacingSeconds;
+    interaction::ConvergenceHistory history;
+    const std::size_t capacity = interaction::ConvergenceHistory::kCapacity;
+    const double spacing = interaction::ConvergenceHistory::kFirstSpacingSeconds;
     for (std::size_t i = 0; i < capacity; ++i)
         history.add(i * spacing, static_cast<float>(i));
     ASSERT_EQ(history.errors().size(), capacity);
@@ -225,7 +225,7 @@ TEST(ConvergenceHistory, WhenFullHalvesItsPointsAndDoublesItsSpacingToSpanEveryt
 // takes 16 times the time, 150 s more.
 TEST(ConvergenceHistory, PredictsTheInverseSquareRootLawWithoutATrend)
 {
-    app::ConvergenceHistory history;
+    interaction::ConvergenceHistory history;
     EXPECT_NEAR(*history.secondsLeftToReach(0.01, 10.0, 0.04), 150.0, 1e-9);
     EXPECT_EQ(*history.secondsLeftToReach(0.01, 10.0, 0.005), 0.0);
     EXPECT_FALSE(history.secondsLeftToReach(0.01, 0.0, 0.04));
@@ -235,7 +235,7 @@ TEST(ConvergenceHistory, PredictsTheInverseSquareRootLawWithoutATrend)
 // of itself in four times the time.
 TEST(ConvergenceHistory, PredictsFromTheTrendOfTheLatterHalf)
 {
-    app::ConvergenceHistory history;
+    interaction::ConvergenceHistory history;
     history.add(1.0, 0.9f);  // early and off the trend: not in the latter half
     for (double seconds = 5.0; seconds <= 10.0; seconds += 0.5)
         history.add(seconds, static_cast<float>(0.4 / seconds));

@@ -25,7 +25,7 @@ void PrintTo(const RegressionCase& regressionCase, std::ostream* out)
 namespace {
 
 void expectAgreesWithReference(const RegressionCase& regressionCase,
-                               const render::RenderSettings& settings, const std::string& label)
+                               const settings::RenderSettings& settings, const std::string& label)
 {
     RenderedImage reference;
     ASSERT_NO_THROW(reference = readReference(referencePath(regressionCase)))
@@ -75,8 +75,8 @@ class GeneralShaderRegression : public ::testing::TestWithParam<RegressionCase> 
 
 TEST_P(GeneralShaderRegression, GeneralShaderAgreesWithReference)
 {
-    render::RenderSettings settings = settingsWithSeed(kTestSeed);
-    settings.variant = render::ShaderVariant::General;
+    settings::RenderSettings settings = settingsWithSeed(kTestSeed);
+    settings.variant = settings::ShaderVariant::General;
     expectAgreesWithReference(GetParam(), settings, "general");
 }
 

@@ -122,7 +122,7 @@ TEST_P(SphereLight, LambertianPlaneMatchesAnalyticIrradianceOfASphere)
         std::string(kCameraAndNoEnvironment) +
         "0\n2\nsolid 0.8 0.8 0.8\nsolid 0 0 0\n2\n0 0 0  0 0 0 0\n5 5 5  0 0 0 0\n2\n"
         "0 0 polyhedron 1  0 1 0 0\n1 1 sphere 0.3 1.2 -0.2 0.2\n");
-    render::RenderSettings settings = settingsWithSeed(13);
+    settings::RenderSettings settings = settingsWithSeed(13);
     settings.multipleImportanceSampling = multipleImportanceSampling;
     const RenderedImage image = renderScene(scene, kWidth, kHeight, 64, settings);
     const PinholeCamera camera(scene.camera, kWidth, kHeight);

@@ -187,7 +187,7 @@ RenderedImage renderWithOtherProgram(const std::string& program, const std::stri
 RenderPair renderPair(const std::string& sceneText, std::uint64_t seed)
 {
     const scene::Scene scene = sceneFromText(sceneText);
-    render::RenderSettings settings = settingsWithSeed(seed);
+    settings::RenderSettings settings = settingsWithSeed(seed);
     settings.samplesPerFrame = 16;
     RenderPair pair;
     if (const char* program = std::getenv("EDGE_BIAS_TRACED_PROGRAM")) {

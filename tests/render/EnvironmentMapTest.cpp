@@ -87,7 +87,7 @@ TEST_P(EnvironmentMapFurnace, WhiteLambertianSphereVanishes)
     const scene::Scene scene = sceneFromText(mapLine(map) +
                                              "0 0 4\n0 0 0\n0 1 0\n40\n0\n1 solid 1 1 1\n"
                                              "1\n0 0 0 0 0 0 0\n1\n0 0 sphere 0 0 0 1\n");
-    render::RenderSettings settings = settingsWithSeed(7);
+    settings::RenderSettings settings = settingsWithSeed(7);
     settings.switchableEnvironment = GetParam() == 1;
     const RenderedImage image = renderScene(scene, 64, 48, 32, settings);
     const PinholeCamera camera(scene.camera, 64, 48);
@@ -152,7 +152,7 @@ TEST_P(SmallPatch, PlaneMatchesTheClosedFormOfTheEquivalentSmallDistantLight)
     const scene::Scene scene = sceneFromText(mapLine(map) +
                                              "0 3 0\n0 0 0\n0 0 -1\n40\n0\n1 solid 0.5 0.5 0.5\n"
                                              "1\n0 0 0 0 0 0 0\n1\n0 0 polyhedron 1 0 1 0 0\n");
-    render::RenderSettings settings = settingsWithSeed(11);
+    settings::RenderSettings settings = settingsWithSeed(11);
     settings.multipleImportanceSampling = GetParam();
     const RenderedImage image = renderScene(scene, 48, 36, 32, settings);
     const Agreement plane = agreementWith(image, expected, [](int, int) { return true; });

@@ -67,7 +67,7 @@ bool sphereTracedHit(const Solid& solid, const glm::dvec3& origin, const glm::dv
     return false;
 }
 
-// shaders/csg.glsl's distance, in double precision, turned by `toLocal` about the origin.
+// scenes/sdf/csg.glsl's distance, in double precision, turned by `toLocal` about the origin.
 struct DrilledRoundedCube {
     glm::dmat3 toLocal{1.0};
 
@@ -129,7 +129,7 @@ template <typename Solid>
 int expectSilhouette(const std::string& sceneText, const Solid& solid, bool exactGeometry)
 {
     const scene::Scene scene = sceneFromText(sceneText);
-    render::RenderSettings settings = settingsWithSeed(3);
+    settings::RenderSettings settings = settingsWithSeed(3);
     settings.exactGeometry = exactGeometry;
     const RenderedImage image = renderScene(scene, kWidth, kHeight, kSamples, settings);
     const PinholeCamera camera(scene.camera, kWidth, kHeight);

@@ -2,7 +2,7 @@
 // re-uploaded without a rebuild and renders as if loaded afresh; a broken edit leaves the
 // renderer as it was; a preview is no part of the accumulation; exposure changes the picture,
 // not the radiance; and the variance-based error estimate predicts the real error.
-#include "render/ConvergenceEstimate.h"
+#include "film/ConvergenceEstimate.h"
 #include "render/ProgressiveRenderer.h"
 #include "scene/FileLookup.h"
 #include "scene/SceneParser.h"
@@ -46,7 +46,7 @@ double largestDifference(const io::Image& a, const io::Image& b)
 
 TEST(InteractiveRenderer, AValuesEditReuploadsAndRendersAsTheEditedSceneLoadedAfresh)
 {
-    const render::RenderSettings settings = settingsWithSeed(5);
+    const settings::RenderSettings settings = settingsWithSeed(5);
     render::ProgressiveRenderer edited(sceneFromText(sceneText()), 48, 36, settings);
     renderSamples(edited, 4);
     const render::ReloadDecision decision =
@@ -159,9 +159,9 @@ double meanRadiance(const io::Image& image)
 }
 
 // The window's renderer: the environment read from a uniform, so that the panel can switch it.
-render::RenderSettings windowSettings(std::uint64_t seed)
+settings::RenderSettings windowSettings(std::uint64_t seed)
 {
-    render::RenderSettings settings = settingsWithSeed(seed);
+    settings::RenderSettings settings = settingsWithSeed(seed);
     settings.switchableEnvironment = true;
     return settings;
 }
@@ -171,30 +171,30 @@ render::RenderSettings windowSettings(std::uint64_t seed)
 // first picture bit for bit, so nothing else moved.
 TEST(InteractiveRenderer, EachPanelSettingChangesThePictureAndSettingItBackRestoresIt)
 {
-    const render::RenderSettings initial = windowSettings(6);
+    const settings::RenderSettings initial = windowSettings(6);
     render::ProgressiveRenderer renderer(sceneFromText(sceneText()), 48, 36, initial);
     renderSamples(renderer, 4);
     const io::Image base = renderer.radiance();
 
-    auto renderWith = [&](const render::RenderSettings& settings) {
+    auto renderWith = [&](const settings::RenderSettings& settings) {
         renderer.setSettings(settings);
         EXPECT_EQ(renderer.samplesPerPixel(), 0) << "a new setting restarts the accumulation";
         renderSamples(renderer, 4);
         return renderer.radiance();
     };
-    render::RenderSettings noEnvironment = initial;
+    settings::RenderSettings noEnvironment = initial;
     noEnvironment.environmentLight = false;
     EXPECT_LT(meanRadiance(renderWith(noEnvironment)), 0.9 * meanRadiance(base))
         << "without the sky only the point light lights the scene";
     EXPECT_EQ(largestDifference(renderWith(initial), base), 0.0) << "the environment back on";
 
-    render::RenderSettings oneBounce = initial;
+    settings::RenderSettings oneBounce = initial;
     oneBounce.maxBounces = 1;
     EXPECT_LT(meanRadiance(renderWith(oneBounce)), meanRadiance(base))
         << "one bounce leaves out the light of the later ones";
     EXPECT_EQ(largestDifference(renderWith(initial), base), 0.0) << "16 bounces again";
 
-    render::RenderSettings looseHits = initial;
+    settings::RenderSettings looseHits = initial;
     looseHits.hitTolerance = 4.0f;
     EXPECT_GT(largestDifference(renderWith(looseHits), base), 0.0)
         << "a hit tolerance of 4 pixels moves the silhouettes";
@@ -203,7 +203,7 @@ TEST(InteractiveRenderer, EachPanelSettingChangesThePictureAndSettingItBackResto
 
 TEST(InteractiveRenderer, PanelSettingsRenderAsTheSameSettingsGivenAtTheStart)
 {
-    render::RenderSettings tuned = windowSettings(7);
+    settings::RenderSettings tuned = windowSettings(7);
     tuned.environmentLight = false;
     tuned.maxBounces = 2;
     tuned.hitTolerance = 1.0f;
@@ -237,13 +237,13 @@ double measuredRelativeError(const RenderedImage& first, const RenderedImage& se
 TEST(ConvergenceEstimate, PredictsTheDistanceBetweenTwoIndependentRenders)
 {
     const scene::Scene scene = sceneFromText(sceneText());
-    render::RenderSettings settings = settingsWithSeed(11);
-    settings.sampler = render::SamplerKind::Independent;
+    settings::RenderSettings settings = settingsWithSeed(11);
+    settings.sampler = settings::SamplerKind::Independent;
     const RenderedImage first = renderScene(scene, 64, 48, 32, settings);
     settings.seed = 12;
     const RenderedImage second = renderScene(scene, 64, 48, 32, settings);
     const std::optional<double> estimate =
-        render::estimateRelativeError(first.accumulation)->relativeError;
+        film::estimateRelativeError(first.accumulation)->relativeError;
     ASSERT_TRUE(estimate);
     const double measured = measuredRelativeError(first, second);
     EXPECT_NEAR(*estimate, measured, 0.15 * measured)
@@ -258,7 +258,7 @@ TEST(ConvergenceEstimate, BoundsTheErrorOfAStratifiedRender)
     const RenderedImage first = renderScene(scene, 64, 48, 32, settingsWithSeed(11));
     const RenderedImage second = renderScene(scene, 64, 48, 32, settingsWithSeed(12));
     const std::optional<double> estimate =
-        render::estimateRelativeError(first.accumulation)->relativeError;
+        film::estimateRelativeError(first.accumulation)->relativeError;
     ASSERT_TRUE(estimate);
     const double measured = measuredRelativeError(first, second);
     EXPECT_GE(*estimate, measured)

@@ -107,8 +107,8 @@ class RayCulling : public ::testing::TestWithParam<CullingCase> {};
 TEST_P(RayCulling, RenderAgreesWithTheUnculledRender)
 {
     const scene::Scene scene = sceneFromText(GetParam().scene, GetParam().name + ".in");
-    render::RenderSettings culled = settingsWithSeed(21);
-    render::RenderSettings unculled = settingsWithSeed(22);
+    settings::RenderSettings culled = settingsWithSeed(21);
+    settings::RenderSettings unculled = settingsWithSeed(22);
     unculled.rayCulling = false;
     const RenderedImage withCulling = renderScene(scene, 64, 48, 64, culled);
     const RenderedImage withoutCulling = renderScene(scene, 64, 48, 64, unculled);

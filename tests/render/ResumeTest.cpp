@@ -34,7 +34,7 @@ int differingValues(const io::Image& a, const io::Image& b)
 
 TEST(ResumedRenderer, GoesOnAsTheRenderThatNeverStopped)
 {
-    const render::RenderSettings settings = settingsWithSeed(21);
+    const settings::RenderSettings settings = settingsWithSeed(21);
     render::ProgressiveRenderer whole(classicScene(), 40, 30, settings);
     renderTo(whole, 12, 5);
 
@@ -45,8 +45,8 @@ TEST(ResumedRenderer, GoesOnAsTheRenderThatNeverStopped)
     EXPECT_EQ(second.samplesPerPixel(), 5);
     renderTo(second, 12, 3);
 
-    const render::Accumulation expected = whole.accumulation();
-    const render::Accumulation resumed = second.accumulation();
+    const film::Accumulation expected = whole.accumulation();
+    const film::Accumulation resumed = second.accumulation();
     EXPECT_EQ(differingValues(resumed.estimate, expected.estimate), 0)
         << "the means and counts must be those of the render that never stopped";
     EXPECT_EQ(differingValues(resumed.moments, expected.moments), 0)
@@ -56,7 +56,7 @@ TEST(ResumedRenderer, GoesOnAsTheRenderThatNeverStopped)
 TEST(ResumedRenderer, RefusesAnAccumulationOfAnotherSize)
 {
     render::ProgressiveRenderer renderer(classicScene(), 16, 12, settingsWithSeed(1));
-    EXPECT_THROW(renderer.resumeFrom(render::Accumulation(12, 16)), std::invalid_argument);
+    EXPECT_THROW(renderer.resumeFrom(film::Accumulation(12, 16)), std::invalid_argument);
 }
 
 }  // namespace

@@ -6,8 +6,8 @@
 #include "gl/VertexArray.h"
 #include "render/EnvironmentMapTextures.h"
 #include "render/PathTracerProgram.h"
-#include "render/ShaderCodes.h"
-#include "render/ShaderSource.h"
+#include "shadergen/ShaderCodes.h"
+#include "shadergen/ShaderSource.h"
 #include "support/TestPaths.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -19,10 +19,10 @@ namespace sampling_tests {
 
 namespace {
 
-render::ShaderSource probeSource()
+shadergen::ShaderSource probeSource()
 {
     const auto shaders = testing_support::sourceDirectory() / "shaders";
-    render::ShaderSource source;
+    shadergen::ShaderSource source;
     // What the modules expect the scene's preamble to define: only Blinn-Phong among the
     // materials, one element in each scene array (unused here), and the kinds' codes.
     source.add("<preamble: the sampling probe>",
@@ -34,7 +34,7 @@ render::ShaderSource probeSource()
                "#define LIGHT_ARRAY_SIZE 1\n"
                "#define HAS_ENVIRONMENT_MAP 1\n#define ENVIRONMENT_KIND_FROM_UNIFORM (-1)\n"
                "#define ENVIRONMENT_KIND ENVIRONMENT_MAP\n" +
-                   render::shaderCodeDefines());
+                   shadergen::shaderCodeDefines());
     for (const char* module :
          {"constants.glsl", "rng.glsl", "sampler.glsl", "sampling.glsl", "scene_data.glsl", "fresnel.glsl",
           "materials.glsl", "environment.glsl"})
@@ -46,7 +46,7 @@ render::ShaderSource probeSource()
 
 gl::Program compileProbe()
 {
-    const render::ShaderSource fragment = probeSource();
+    const shadergen::ShaderSource fragment = probeSource();
     return gl::Program(
         render::fullscreenVertexSource(testing_support::sourceDirectory() / "shaders"),
         fragment.text(), "the sampling probe",

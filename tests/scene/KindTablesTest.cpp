@@ -60,7 +60,7 @@ TEST(KindCodes, NoShaderModuleDeclaresACodeOfItsOwn)
           "scene_data.glsl", "sdf_primitives.glsl", "shape_interpreter.glsl"})
         EXPECT_FALSE(std::regex_search(readModule(module), copiedCode))
             << module << " writes a kind's code as a number: it must come from the generated "
-                         "#defines (render/ShaderCodes.h)";
+                         "#defines (shadergen/ShaderCodes.h)";
 }
 
 // --- CSG operators ----------------------------------------------------------------------
@@ -119,7 +119,7 @@ TEST(MaterialKinds, CodesAreTheirPlaceInTheListAndNamesAreDistinct)
 
 // The first material is the dispatchers' fallback, in every shader; each other one is
 // compiled in by its switch. Each defines, under its prefix and with the others' signatures,
-// the functions the generated dispatchers call (render/KindDispatchers.cpp).
+// the functions the generated dispatchers call (shadergen/KindDispatchers.cpp).
 TEST(MaterialKinds, EachDefinesItsFunctionsInMaterialsGlslAndAllButTheFallbackHaveASwitch)
 {
     const std::string glsl = readModule("materials.glsl");

@@ -85,7 +85,7 @@ int main(int argc, char* argv[])
         request.windowWidth = width;
         request.windowHeight = height;
         auto context = platform::createContext(request);
-        render::RenderSettings settings;
+        settings::RenderSettings settings;
         settings.samplesPerFrame = 1;
         settings.secondsPerBand = 0.0;
         render::ProgressiveRenderer renderer(scenes[0], width, height, settings);

@@ -20,15 +20,15 @@ scene::Scene sceneFromText(const std::string& text, const std::string& name)
     return scene::parseSceneText(text, name, lookup);
 }
 
-render::RenderSettings settingsWithSeed(std::uint64_t seed)
+settings::RenderSettings settingsWithSeed(std::uint64_t seed)
 {
-    render::RenderSettings settings;
+    settings::RenderSettings settings;
     settings.seed = seed;
     return settings;
 }
 
 RenderedImage renderScene(const scene::Scene& scene, int width, int height, int samplesPerPixel,
-                          const render::RenderSettings& settings)
+                          const settings::RenderSettings& settings)
 {
     render::ProgressiveRenderer renderer(scene, width, height, settings);
     // Several paths per pixel in one draw cost less than as many draws, and give the same

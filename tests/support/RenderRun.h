@@ -2,8 +2,8 @@
 // Rendering a scene in-process, in the GL context the test executable made (GlTestMain.cpp),
 // and reading back what the regression and physics tests compare.
 #include "io/Image.h"
-#include "render/Accumulation.h"
-#include "render/RenderSettings.h"
+#include "film/Accumulation.h"
+#include "settings/RenderSettings.h"
 #include "scene/Scene.h"
 
 #include <cstdint>
@@ -18,7 +18,7 @@ struct RenderedImage {
     io::Image radiance;    // linear RGB, top row first
     io::Image statistics;  // per pixel: samples, discarded samples, variance of the mean
     std::uint64_t discardedSamples = 0;
-    render::Accumulation accumulation;
+    film::Accumulation accumulation;
 
     int width() const { return radiance.width; }
     int height() const { return radiance.height; }
@@ -33,11 +33,11 @@ scene::Scene loadScene(const std::filesystem::path& path);
 // project's textures/ and shaders/.
 scene::Scene sceneFromText(const std::string& text, const std::string& name = "inline.in");
 
-render::RenderSettings settingsWithSeed(std::uint64_t seed);
+settings::RenderSettings settingsWithSeed(std::uint64_t seed);
 
 // Renders exactly `samplesPerPixel` frames.
 RenderedImage renderScene(const scene::Scene& scene, int width, int height, int samplesPerPixel,
-                          const render::RenderSettings& settings);
+                          const settings::RenderSettings& settings);
 
 // Mean of the three channels, the quantity whose variance sampleStatistics() bounds.
 float channelMean(const io::Image& image, int x, int y);

@@ -1,0 +1,73 @@
+#pragma once
+#include "interaction/ConvergenceHistory.h"
+
+#include <optional>
+#include <string>
+
+struct GLFWwindow;
+struct ImGuiContext;
+
+namespace interaction {
+
+// What the panel shows, as numbers and lines of text.
+struct PanelReadings {
+    int width = 0;
+    int height = 0;
+    int samplesPerPixel = 0;
+    double samplesPerSecond = 0.0;
+    double elapsedSeconds = 0.0;  // since the accumulation began
+    bool previewing = false;      // the view is changing: a coarse sample per frame
+    int previewDivisor = 1;
+    double previewFramesPerSecond = 0.0;
+    std::optional<double> relativeError;
+    std::optional<double> targetError;      // --target-error
+    std::optional<double> secondsToTarget;  // predicted
+    const ConvergenceHistory* history = nullptr;
+    std::string features;  // SceneFeatures::describe()
+    std::string status;    // the last reload or save, or the error that stopped a reload
+    bool statusIsError = false;
+};
+
+// What a user tunes while watching. All of it is uniforms: nothing recompiles.
+struct PanelSettings {
+    float exposure = 4.0f;
+    float hitTolerance = 0.25f;
+    int maxBounces = 16;
+    bool environment = true;
+
+    bool operator==(const PanelSettings& other) const;
+    bool operator!=(const PanelSettings& other) const { return !(*this == other); }
+};
+
+// The on-screen statistics and settings, drawn with Dear ImGui over the picture (Tab shows
+// or hides it). It starts hidden: shown, it covers most of a small window and takes the
+// mouse drags that start over it, so a fresh window would not answer the mouse. It owns the
+// ImGui context and the backends for the window, which must have its input callbacks
+// installed before the panel is made (ImGui chains to them).
+class StatisticsPanel {
+public:
+    explicit StatisticsPanel(GLFWwindow* window);
+    ~StatisticsPanel();
+    StatisticsPanel(const StatisticsPanel&) = delete;
+    StatisticsPanel& operator=(const StatisticsPanel&) = delete;
+
+    void toggle() { visible_ = !visible_; }
+    bool visible() const { return visible_; }
+
+    // Draws the panel into the bound framebuffer, over what is there, and returns the
+    // settings as the user left them.
+    PanelSettings draw(const PanelReadings& readings, const PanelSettings& settings);
+
+    // The mouse or the keyboard is busy with the panel: the view must not take that input.
+    bool wantsMouse() const;
+    bool wantsKeyboard() const;
+
+    // The one line of help listing every key and mouse action.
+    static const char* const kHelp;
+
+private:
+    ImGuiContext* context_ = nullptr;
+    bool visible_ = false;
+};
+
+}  // namespace interaction

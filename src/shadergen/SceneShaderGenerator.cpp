@@ -1,0 +1,142 @@
+#include "shadergen/SceneShaderGenerator.h"
+
+#include "shadergen/ExactSceneIntersection.h"
+#include "shadergen/InterpretedSceneCode.h"
+#include "shadergen/ShaderCodes.h"
+#include "shadergen/SpecializedSceneCode.h"
+
+#include <algorithm>
+#include <sstream>
+
+namespace shadergen {
+
+using namespace scene;
+
+namespace {
+
+void define(std::ostringstream& out, const std::string& name, int value)
+{
+    out << "#define " << name << " " << value << "\n";
+}
+
+}  // namespace
+
+bool specializesFeatures(ShaderVariant variant)
+{
+    return variant == ShaderVariant::Specialized || variant == ShaderVariant::FeaturesOnly;
+}
+
+bool specializesShapes(ShaderVariant variant)
+{
+    return variant == ShaderVariant::Specialized || variant == ShaderVariant::ShapesOnly;
+}
+
+ShaderBuild shaderBuild(const settings::RenderSettings& settings)
+{
+    ShaderBuild build;
+    build.variant = settings.variant;
+    build.environment = settings.switchableEnvironment ? EnvironmentBinding::FromUniform
+                                                       : EnvironmentBinding::BuiltIn;
+    build.exactGeometry = settings.exactGeometry;
+    build.profileCounters = settings.profileCounters;
+    build.marchBoxesCylindersAndDisks = settings.marchBoxesCylindersAndDisks;
+    return build;
+}
+
+SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& build)
+{
+    const ShaderVariant variant = build.variant;
+    const EnvironmentBinding environment = build.environment;
+    SceneShaderCode code;
+    code.variant = variant;
+    code.exactGeometry = build.exactGeometry;
+    code.profileCounters = build.profileCounters;
+    const bool specialized = specializesShapes(variant);
+    code.features = specializesFeatures(variant) ? analyseFeatures(scene)
+                                                 : SceneFeatures::everything(scene);
+    if (!specialized)
+        // The interpreter reads transforms whether or not this scene has any.
+        code.features.transforms = true;
+    for (const auto& [name, path] : code.features.userSdfs)
+        code.userSdfFiles.push_back(path);
+
+    ShapeCompiler compiler(code.shapeParameters, code.shapeProgram);
+    if (specialized) {
+        code.plan = planScene(scene, compiler, build.marchBoxesCylindersAndDisks);
+        code.objectCullingBits = code.plan.objectCullingBits;
+        code.marchesAnything = code.plan.marchesAnything;
+        code.marchedUnion = code.plan.marchedSurfaceCount >= 2;
+        code.sceneFunctions = specializedSceneFunctions(code.plan, compiler.functions());
+    } else {
+        InterpretedScene interpreted = interpretedScene(scene, compiler);
+        code.objectProgramStart = std::move(interpreted.objectProgramStart);
+        code.objectBounds = std::move(interpreted.objectBounds);
+        code.sceneFunctions = std::move(interpreted.functions);
+        // The interpreter's culled forms leave out object k < 32 where mask bit k is clear.
+        for (std::size_t i = 0; i < scene.objects.size(); ++i)
+            code.objectCullingBits.push_back(i < kCullingBits ? 1u << i : 0u);
+    }
+    if (build.exactGeometry) {
+        code.exactFunctions = generateExactSceneIntersection(scene, code.shapeParameters);
+    }
+
+    const SceneFeatures& f = code.features;
+    const std::vector<Light> lights = sceneLights(scene);
+    const int lightCount = static_cast<int>(lights.size());
+    int environmentLight = -1;
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        if (lights[i].kind == LightKind::Environment)
+            environmentLight = static_cast<int>(i);
+    std::ostringstream out;
+    define(out, "OBJECT_COUNT", static_cast<int>(scene.objects.size()));
+    define(out, "OBJECT_ARRAY_SIZE", std::max<int>(1, scene.objects.size()));
+    define(out, "SHAPE_PARAMETER_ARRAY_SIZE", std::max<int>(1, code.shapeParameters.size()));
+    define(out, "SHAPE_PROGRAM_ARRAY_SIZE", std::max<int>(1, code.shapeProgram.size()));
+    define(out, "SHAPE_STACK_DEPTH", compiler.maxStackDepth() + 1);
+    define(out, "PIGMENT_ARRAY_SIZE", std::max<int>(1, scene.pigments.size()));
+    define(out, "FINISH_ARRAY_SIZE", std::max<int>(1, scene.finishes.size()));
+    define(out, "LIGHT_COUNT", lightCount);
+    define(out, "LIGHT_ARRAY_SIZE", std::max(1, lightCount));
+    for (const MaterialDescription& material : materialDescriptions())
+        if (material.featureSwitch != nullptr)
+            define(out, material.featureSwitch, f.has(material.kind) ? 1 : 0);
+    define(out, "HAS_NULL_INTERFACES", f.nullInterfaces ? 1 : 0);
+    for (const PigmentDescription& pigment : pigmentDescriptions())
+        if (pigment.featureSwitch != nullptr)
+            define(out, pigment.featureSwitch, f.has(pigment.kind) ? 1 : 0);
+    for (const LightDescription& light : lightDescriptions())
+        define(out, light.featureSwitch, f.has(light.kind) ? 1 : 0);
+    // Where the environment's light record is (integrator.glsl weighs escaping rays by it).
+    define(out, "ENVIRONMENT_LIGHT_INDEX", environmentLight);
+    for (const EnvironmentDescription& kind : environmentDescriptions())
+        if (kind.featureSwitch != nullptr)
+            define(out, kind.featureSwitch, f.has(kind.kind) ? 1 : 0);
+    out << "#define ENVIRONMENT_KIND_FROM_UNIFORM (-1)\n";
+    if (specializesFeatures(variant) && environment == EnvironmentBinding::BuiltIn)
+        define(out, "ENVIRONMENT_KIND", describe(f.environment).code);
+    else
+        out << "#define ENVIRONMENT_KIND ENVIRONMENT_KIND_FROM_UNIFORM\n";
+    define(out, "PROFILE_COUNTERS", build.profileCounters ? 1 : 0);
+    define(out, "EXACT_BOXES_CYLINDERS_AND_DISKS", build.marchBoxesCylindersAndDisks ? 0 : 1);
+    out << "#define THINNEST_EXACT_TORUS " << kThinnestExactTorus << "\n";
+    // Where every object is met exactly (polyhedra, spheres, lights), no ray marches: the
+    // sphere tracer's loops are left out, which llvmpipe would otherwise run once per ray
+    // with no pixel in them.
+    define(out, "HAS_MARCHED_OBJECTS", code.marchesAnything ? 1 : 0);
+    // One marched object: its gradient is never tilted by another's, and a gradient whose
+    // length is not 1 is its own field's (a user SDF that is no exact distance), which
+    // backing off would not change: llvmpipe would pay a second gradient at every hit.
+    define(out, "HAS_MARCHED_UNION", code.marchedUnion ? 1 : 0);
+    // The generated shape code reads the shape parameters at constant indices: they are read
+    // once per pixel, before any branch (scene_data.glsl). The interpreter's indices vary.
+    define(out, "SHAPE_PARAMETERS_READ_ONCE",
+           specializesShapes(variant) &&
+                   code.shapeParameters.size() <= kMostShapeParametersReadOnce
+               ? 1
+               : 0);
+    out << shaderCodeDefines();
+    code.defines = out.str();
+    return code;
+}
+
+}  // namespace shadergen

@@ -1,0 +1,90 @@
+#pragma once
+#include "shadergen/SceneShaderPlan.h"
+#include "scene/Scene.h"
+#include "scene/SceneFeatures.h"
+#include "settings/RenderSettings.h"
+
+#include <glm/glm.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace shadergen {
+
+using settings::ShaderVariant;
+
+
+bool specializesFeatures(ShaderVariant variant);
+bool specializesShapes(ShaderVariant variant);
+
+// The most shape parameters (vec4s) the specialised shader reads into its own variables once
+// per pixel (scene_data.glsl says why); a larger scene reads them where they are used.
+constexpr std::size_t kMostShapeParametersReadOnce = 256;
+
+// Where the shader takes the environment's kind from. A specialised shader builds it in;
+// the window reads it from a uniform so that its panel can switch the environment off
+// without a recompile (the general shader always does).
+enum class EnvironmentBinding { BuiltIn, FromUniform };
+
+// The scene-dependent part of the path-tracing shader: the #defines that switch modules on
+// and size the uniform arrays, the distance functions of the scene, and the shape
+// parameters they read. Only structure (which shapes, which CSG tree, which features)
+// reaches the code; every number lands in `shapeParameters`, so editing a value gives the
+// same code and only new uniforms.
+struct SceneShaderCode {
+    ShaderVariant variant = ShaderVariant::Specialized;
+    scene::SceneFeatures features;  // what the shader is built for
+    std::string defines;            // lines for the preamble, after #version
+    std::vector<std::filesystem::path> userSdfFiles;
+    // The specialised shader's decisions for each object, from which its scene functions
+    // are written (empty for the interpreted shapes).
+    ScenePlan plan;
+    // The scene's distance functions (each with a comment naming its object and scene-file
+    // line), sceneDistance, sceneDistanceAndObject and their culled forms.
+    std::string sceneFunctions;
+    // --exact-geometry: rays find surfaces by exact intersection (exactSceneIntersect,
+    // below) instead of sphere tracing.
+    bool exactGeometry = false;
+    std::string exactFunctions;
+    bool profileCounters = false;
+    // Some ray marches some object (false where every object is met exactly).
+    bool marchesAnything = true;
+    // Two or more objects are marched, so a normal's stencil may reach where one object's
+    // distance measures another's hidden face (sceneNormal backs off there).
+    bool marchedUnion = true;
+
+    std::vector<glm::vec4> shapeParameters;
+    std::vector<glm::ivec4> shapeProgram;  // General only
+    std::vector<int> objectProgramStart;   // General only: per object
+    std::vector<glm::vec4> objectBounds;   // General only: per object, radius < 0 for none
+    // Per object: the culling-mask bit that leaves the whole object out of a culled distance
+    // (ray_culling.glsl), or 0 where none does.
+    std::vector<std::uint32_t> objectCullingBits;
+};
+
+// Everything but the scene that shapes the shader's code.
+struct ShaderBuild {
+    ShaderVariant variant = ShaderVariant::Specialized;
+    EnvironmentBinding environment = EnvironmentBinding::BuiltIn;
+    // Rays find surfaces by exact intersection instead of sphere tracing (--exact-geometry).
+    bool exactGeometry = false;
+    // The shader counts its work per path (march steps by kind of ray, shadow rays, path
+    // segments) and accumulates those counts instead of radiance: bench_throughput reads
+    // them.
+    bool profileCounters = false;
+    // Boxes, capped cylinders and disks are marched instead of met exactly, as before the
+    // renderer met them exactly: only so that the sphere tracer's handling of silhouettes,
+    // edges and contacts can still be judged against exact intersection on shapes that
+    // have one (tests/render/EdgeBiasTest.cpp), and what meeting them exactly saves measured.
+    bool marchBoxesCylindersAndDisks = false;
+};
+
+// What of the settings shapes the shader's code (the rest are uniforms).
+ShaderBuild shaderBuild(const settings::RenderSettings& settings);
+
+SceneShaderCode generateSceneShaderCode(const scene::Scene& scene, const ShaderBuild& build = {});
+
+}  // namespace shadergen
