@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <sstream>
 
 namespace render_tests {
@@ -97,6 +98,7 @@ TEST_P(EnvironmentMapFurnace, WhiteLambertianSphereVanishes)
         });
     });
     ASSERT_GT(sphere.pixels, 300);
+    std::cout << "white sphere under a map of radiance 1: " << sphere.describe() << "\n";
     EXPECT_LT(sphere.worstZ, 5.0) << "every pixel of the sphere should read 1; " << sphere.describe();
     EXPECT_NEAR(sphere.mean, 1.0, 4.0 * sphere.meanStandardError + 1e-4) << sphere.describe();
     EXPECT_EQ(image.discardedSamples, 0u);
@@ -156,6 +158,8 @@ TEST_P(SmallPatch, PlaneMatchesTheClosedFormOfTheEquivalentSmallDistantLight)
     settings.multipleImportanceSampling = GetParam();
     const RenderedImage image = renderScene(scene, 48, 36, 32, settings);
     const Agreement plane = agreementWith(image, expected, [](int, int) { return true; });
+    std::cout << "plane under a small bright patch, expected " << expected << ": "
+              << plane.describe() << "\n";
     EXPECT_LT(plane.worstZ, 5.0) << "every pixel of the plane should read a E / pi = " << expected
                                  << "; " << plane.describe();
     EXPECT_NEAR(plane.mean, expected, 0.01 * expected)
