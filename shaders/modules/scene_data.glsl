@@ -51,16 +51,17 @@ uniform vec4 uFinishConductors[2 * FINISH_ARRAY_SIZE];
 #endif
 
 // Per light, three vec4: (position or centre, radius), (intensity or radiance, selection
-// probability), (cumulative selection probability, object index or -1 for a point light,
-// the sphere's culling bit or 0, -). Lights are chosen in proportion to their emitted power.
+// probability), (cumulative selection probability, the object that is the light or -1, its
+// culling bit or 0, its kind: a LIGHT_* code). Lights are chosen in proportion to their
+// emitted power; what each kind's record holds is scene/Lights.h's Light.
 uniform vec4 uLights[3 * LIGHT_ARRAY_SIZE];
 // The culling bits of every sphere light that has one: rays leave those out of their marches
 // and intersect the spheres exactly instead (ray_queries_traced.glsl).
 uniform uint uSphereLightPieces;
 
-// The pigment and material codes (PIGMENT_*, MATERIAL_*) are generated #defines
-// (render/ShaderCodes.h), from the kinds' descriptions in scene/Pigments.h and
-// scene/Materials.h.
+// The pigment, material and light codes (PIGMENT_*, MATERIAL_*, LIGHT_*) are generated
+// #defines (render/ShaderCodes.h), from the kinds' descriptions in scene/Pigments.h,
+// scene/Materials.h and scene/Lights.h.
 
 // A table of one record (one light, as in every classic scene) is read once, like the other
 // uniforms, and its accessors read that copy whatever index they are given (an index out of
@@ -153,9 +154,9 @@ float lightRadius(int light) { return LIGHT_RECORD(light, 0).w; }
 vec3 lightEmission(int light) { return LIGHT_RECORD(light, 1).rgb; }
 float lightSelectionProbability(int light) { return LIGHT_RECORD(light, 1).w; }
 float lightCumulativeProbability(int light) { return LIGHT_RECORD(light, 2).x; }
-bool isPointLight(int light) { return LIGHT_RECORD(light, 2).y < 0.0; }
 int lightObject(int light) { return int(LIGHT_RECORD(light, 2).y); }
 uint lightCullingBit(int light) { return uint(LIGHT_RECORD(light, 2).z); }
+int lightKind(int light) { return int(LIGHT_RECORD(light, 2).w); }
 
 // An object that refracts nothing: a dielectric of index exactly 1, between equal media.
 // It has no interface, so light passes it unbent, tinted by its pigment. A constant false in

@@ -25,6 +25,13 @@ int coarseSide(int side, int divisor)
     return std::max(1, (side + divisor - 1) / divisor);
 }
 
+std::optional<EnvironmentMapTextures> uploadEnvironmentTextures(const EnvironmentMap* map)
+{
+    if (map == nullptr)
+        return std::nullopt;
+    return uploadEnvironmentMap(*map);
+}
+
 }  // namespace
 
 void checkRenderSize(int width, int height)
@@ -68,6 +75,8 @@ ProgressiveRenderer::ProgressiveRenderer(PreparedScene prepared, const KernelCho
                 std::make_unique<PathTracerProgram>(prepared.pathTracerSource, kernel.kernel,
                                                     defaultShaderDirectory()))),
       pigmentTextures_(loadPigmentTextures(uniforms_.textureLayers)),
+      environmentMap_(std::move(prepared.environmentMap)),
+      environmentTextures_(uploadEnvironmentTextures(environmentMap_.get())),
       targets_(width, height),
       toneMapper_(defaultShaderDirectory()),
       tileSampleTargets_(gl::createTexture2D(GL_R32F, 1, 1, GL_RED, GL_FLOAT, nullptr))
@@ -93,9 +102,16 @@ void ProgressiveRenderer::generateDriverCode()
     targets_.previous().estimate.bind(0);
     targets_.previous().moments.bind(1);
     pigmentTextures_.texture.bind(3);
+    bindEnvironmentTextures();
     program_->trace(targets_.next(), {0, 0, 1, 1}, width(), height(), triangle_);
     glFinish();
     gl::throwOnGlError("generating the shader's code");
+}
+
+void ProgressiveRenderer::bindEnvironmentTextures() const
+{
+    if (environmentTextures_)
+        environmentTextures_->bind();
 }
 
 void ProgressiveRenderer::uploadAll()
@@ -106,6 +122,12 @@ void ProgressiveRenderer::uploadAll()
     glUniform1i(program.uniformLocation("uPreviousEstimate"), 0);
     glUniform1i(program.uniformLocation("uPreviousMoments"), 1);
     glUniform1i(program.uniformLocation("uPigmentTextures"), 3);
+    if (environmentTextures_) {
+        glUniform1i(program.uniformLocation("uEnvironmentMap"),
+                    EnvironmentMapTextures::kRadianceUnit);
+        glUniform1i(program.uniformLocation("uEnvironmentDistribution"),
+                    EnvironmentMapTextures::kDistributionUnit);
+    }
     glUniform1i(program.uniformLocation("uTileSampleTargets"), kTileSampleTargetsUnit);
     glUniform1f(program.uniformLocation("uPigmentTextureSize"),
                 static_cast<float>(pigmentTextures_.size));
@@ -129,16 +151,22 @@ ReloadDecision ProgressiveRenderer::setScene(const scene::Scene& original,
                                                   defaultShaderDirectory())
             : nullptr;
     std::optional<PigmentTextures> textures;
-    if (decision.reloadTextures)
+    std::optional<EnvironmentMapTextures> environmentTextures;
+    if (decision.reloadTextures) {
         textures = loadPigmentTextures(prepared.uniforms.textureLayers);
+        environmentTextures = uploadEnvironmentTextures(prepared.environmentMap.get());
+    }
 
     scene_ = std::move(prepared.visible);
     code_ = std::move(prepared.code);
     uniforms_ = std::move(prepared.uniforms);
     if (program)
         program_ = std::move(program);
-    if (textures)
+    if (textures) {
         pigmentTextures_ = std::move(*textures);
+        environmentTextures_ = std::move(environmentTextures);
+    }
+    environmentMap_ = std::move(prepared.environmentMap);
     uploadAll();
     restartAccumulation();
     if (decision.rebuildShader)
@@ -150,7 +178,7 @@ void ProgressiveRenderer::setCamera(const scene::Camera& camera)
 {
     scene_.camera = camera;
     // The scene's bounds hold the camera, and the tolerances follow the bounds.
-    uniforms_ = packSceneUniforms(scene_, code_);
+    uniforms_ = packSceneUniforms(scene_, code_, environmentMap_.get());
     uploadAll();
     clearAccumulation();
 }
@@ -241,6 +269,7 @@ void ProgressiveRenderer::renderPreview(int divisor, int maxBounces)
     source.estimate.bind(0);
     source.moments.bind(1);
     pigmentTextures_.texture.bind(3);
+    bindEnvironmentTextures();
     program_->trace(targets_.next(), {0, 0, previewWidth, previewHeight}, width(), height(),
                     triangle_);
     glUniform2f(program.uniformLocation("uImageSize"), static_cast<float>(width()),
@@ -310,6 +339,7 @@ bool ProgressiveRenderer::drawFrame(const std::function<bool()>& keepGoing, int 
     source.estimate.bind(0);
     source.moments.bind(1);
     pigmentTextures_.texture.bind(3);
+    bindEnvironmentTextures();
     tileSampleTargets_.bind(kTileSampleTargetsUnit);
     for (int row = 0; row < height();) {
         if (row > 0 && keepGoing && !keepGoing())

@@ -1,6 +1,7 @@
 #include "render/SceneUniforms.h"
 
 #include "gl/Shader.h"
+#include "scene/Lights.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -14,11 +15,6 @@ using namespace scene;
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
-
-double average(const glm::dvec3& v)
-{
-    return (v.x + v.y + v.z) / 3.0;
-}
 
 template <typename Vector>
 void setArray(const gl::Program& program, const char* name, const std::vector<Vector>& values);
@@ -56,22 +52,6 @@ void setVec3(const gl::Program& program, const char* name, const glm::vec3& valu
 
 }  // namespace
 
-// In double: the power of a bright, large sphere light (radiance near the float maximum)
-// overflows float, and one infinite power would make every selection probability NaN.
-std::vector<double> lightPowers(const Scene& scene)
-{
-    constexpr double kPiDouble = 3.14159265358979323846;
-    std::vector<double> powers;
-    for (const PointLight& light : scene.pointLights)
-        powers.push_back(4.0 * kPiDouble * average(glm::dvec3(light.intensity)));
-    for (const SphereLight& light : sphereLights(scene)) {
-        const double radius = light.radius;
-        powers.push_back(4.0 * kPiDouble * kPiDouble * radius * radius *
-                         average(glm::dvec3(light.radiance)));
-    }
-    return powers;
-}
-
 bool SceneUniforms::operator==(const SceneUniforms& other) const
 {
     return objects == other.objects && pigments == other.pigments &&
@@ -85,10 +65,14 @@ bool SceneUniforms::operator==(const SceneUniforms& other) const
            cameraFrame.forward == other.cameraFrame.forward && cameraEye == other.cameraEye &&
            tanHalfFovy == other.tanHalfFovy && bounds.center == other.bounds.center &&
            bounds.radius == other.bounds.radius && environment.kind == other.environment.kind &&
-           environment.color == other.environment.color;
+           environment.color == other.environment.color &&
+           environment.mapPath == other.environment.mapPath &&
+           environment.intensity == other.environment.intensity &&
+           environment.rotationDegrees == other.environment.rotationDegrees;
 }
 
-SceneUniforms packSceneUniforms(const Scene& scene, const shadergen::SceneShaderCode& code)
+SceneUniforms packSceneUniforms(const Scene& scene, const shadergen::SceneShaderCode& code,
+                                const EnvironmentMap* environmentMap)
 {
     SceneUniforms packed;
 
@@ -119,38 +103,40 @@ SceneUniforms packSceneUniforms(const Scene& scene, const shadergen::SceneShader
         packed.conductors.emplace_back(ior.k, 0.0f);
     }
 
-    const std::vector<SphereLight> spheres = sphereLights(scene);
-    const std::vector<double> powers = lightPowers(scene);
+    packed.bounds = computeSceneBounds(scene);
+    LightPowerContext context;
+    context.sceneRadius = packed.bounds.radius;
+    if (environmentMap != nullptr)
+        context.environmentIntegral = environmentMap->integral;
+    const std::vector<Light> lights = sceneLights(scene);
+    const std::vector<double> powers = lightPowers(lights, context);
     double totalPower = 0.0;
     for (double power : powers)
         totalPower += power;
     std::vector<int> lightOfObject(scene.objects.size(), -1);
     double cumulativeProbability = 0.0;
-    for (std::size_t i = 0; i < powers.size(); ++i) {
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const Light& light = lights[i];
         const float probability =
             totalPower > 0.0 ? static_cast<float>(powers[i] / totalPower) : 0.0f;
         cumulativeProbability += totalPower > 0.0 ? powers[i] / totalPower : 0.0;
         // The last light closes the table exactly at 1 whatever the rounding.
         const float cdf =
-            i + 1 == powers.size() ? 1.0f : static_cast<float>(cumulativeProbability);
-        if (i < scene.pointLights.size()) {
-            const PointLight& light = scene.pointLights[i];
-            packed.lights.emplace_back(light.position, 0.0f);
-            packed.lights.emplace_back(light.intensity, probability);
-            packed.lights.emplace_back(cdf, -1.0f, 0.0f, 0.0f);
-        } else {
-            const SphereLight& light = spheres[i - scene.pointLights.size()];
+            i + 1 == lights.size() ? 1.0f : static_cast<float>(cumulativeProbability);
+        // A light that is an object takes the object's culling bit: rays leave it out of
+        // their marches and meet it exactly (ray_queries_traced.glsl).
+        std::uint32_t bit = 0u;
+        if (light.object >= 0) {
             lightOfObject[light.object] = static_cast<int>(i);
-            packed.lights.emplace_back(light.center, light.radius);
-            packed.lights.emplace_back(light.radiance, probability);
-            const std::uint32_t bit = static_cast<std::size_t>(light.object) <
-                                              code.objectCullingBits.size()
-                                          ? code.objectCullingBits[light.object]
-                                          : 0u;
-            packed.lights.emplace_back(cdf, static_cast<float>(light.object),
-                                       static_cast<float>(bit), 0.0f);
+            if (static_cast<std::size_t>(light.object) < code.objectCullingBits.size())
+                bit = code.objectCullingBits[light.object];
             packed.sphereLightPieces |= bit;
         }
+        packed.lights.emplace_back(light.position, light.radius);
+        packed.lights.emplace_back(light.emission, probability);
+        packed.lights.emplace_back(cdf, static_cast<float>(light.object),
+                                   static_cast<float>(bit),
+                                   static_cast<float>(describe(light.kind).code));
     }
 
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
@@ -164,7 +150,6 @@ SceneUniforms packSceneUniforms(const Scene& scene, const shadergen::SceneShader
     packed.tanHalfFovy =
         std::tan(0.5f * scene.camera.verticalFieldOfViewDegrees * kPi / 180.0f);
     packed.lens = scene.camera.lens.value_or(ThinLens{});
-    packed.bounds = computeSceneBounds(scene);
     packed.environment = scene.environment;
     return packed;
 }
@@ -196,6 +181,12 @@ void uploadUniforms(const gl::Program& program, const SceneUniforms& uniforms,
            describe(settings.environmentLight ? uniforms.environment.kind : EnvironmentKind::None)
                .code);
     setVec3(program, "uEnvironmentColor", uniforms.environment.color);
+    if (uniforms.environment.kind == EnvironmentKind::Map) {
+        const float angle = uniforms.environment.rotationDegrees * kPi / 180.0f;
+        setFloat(program, "uEnvironmentIntensity", uniforms.environment.intensity);
+        glUniform2f(program.uniformLocation("uEnvironmentRotation"), std::cos(angle),
+                    std::sin(angle));
+    }
 
     setFloat(program, "uMinimumHitDistance", uniforms.bounds.minimumHitDistance());
     setFloat(program, "uFarDistance", uniforms.bounds.farDistance());

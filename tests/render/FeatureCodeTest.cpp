@@ -31,7 +31,7 @@ std::vector<std::string> activeOf(const scene::Scene& scene,
         shadergen::generateSceneShaderCode(scene, shadergen::ShaderBuild{});
     const auto shaders = sourceDirectory() / "shaders";
     const render::PathTracerProgram program(render::assemblePathTracerSource(code, shaders),
-                                            shaders);
+                                            settings::PathKernel::Fragment, shaders);
     std::vector<std::string> active;
     for (const std::string& name : uniforms)
         if (program.program().uniformLocation(name.c_str()) >= 0)
