@@ -939,8 +939,9 @@ def regenerating_section():
 
 
 def keep_other_tools_sections(out, markdown):
-    """The per-pixel sections (tools/per_pixel_report.py) and the target-error section
-    (bench/target_error.py) are written by other tools: they are kept from the page as it was,
+    """The summary at the top (by hand), the per-pixel sections (tools/per_pixel_report.py), the target-error section
+    (bench/target_error.py) and the environment maps' (bench/environment_sampling.cpp,
+    bench/mitsuba/compare_environment_maps.py) are written by other tools or by hand: they are kept from the page as it was,
     in their order, before the convergence section. The per-pixel sections' hand-written
     reading, when there is one, ends at its own marker."""
     if os.path.exists(markdown):
@@ -948,12 +949,18 @@ def keep_other_tools_sections(out, markdown):
         kept = []
         for begin, end in (("<!-- per-pixel:begin -->", "<!-- per-pixel-reading:end -->"),
                            ("<!-- per-pixel:begin -->", "<!-- per-pixel:end -->"),
-                           ("<!-- target-error:begin -->", "<!-- target-error:end -->")):
+                           ("<!-- target-error:begin -->", "<!-- target-error:end -->"),
+                           ("<!-- environment-maps:begin -->",
+                            "<!-- environment-maps:end -->")):
             if begin in previous and end in previous and not any(begin in k for k in kept):
                 kept.append(previous[previous.index(begin):previous.index(end) + len(end)] + "\n")
         at = next((i for i, line in enumerate(out) if line.startswith("## Convergence")),
                   len(out))
         out[at:at] = kept
+        # The current answers, written by hand from every section, open the page.
+        begin, end = "<!-- at-a-glance:begin -->", "<!-- at-a-glance:end -->"
+        if begin in previous and end in previous:
+            out[1:1] = [previous[previous.index(begin):previous.index(end) + len(end)] + "\n"]
 
 
 def write_report(args):

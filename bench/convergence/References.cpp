@@ -81,6 +81,8 @@ std::string referenceKey(const scene::Scene& parsed, const settings::RenderSetti
     hash.addVector(uniforms.lights);
     for (const fs::path& texture : uniforms.textureLayers)
         hash.add(fileBytes(texture));
+    if (!uniforms.environment.mapPath.empty())
+        hash.add(fileBytes(uniforms.environment.mapPath));
     hash.add(describeSettings(settings));
     hash.add(std::to_string(width) + "x" + std::to_string(height) + " " +
              std::to_string(samplesPerPixel) + "spp");

@@ -1,7 +1,8 @@
 // The path tracer: one path per call, an unbiased estimate of the radiance through a pixel
-// (Kajiya 1986), with next-event estimation for point and sphere lights and multiple
-// importance sampling (Veach 1997, power heuristic) between light and BSDF sampling of
-// sphere lights, so that no light is counted twice.
+// (Kajiya 1986), with next-event estimation for the lights (direct_lighting.glsl) and
+// multiple importance sampling (Veach 1997, power heuristic) between light and BSDF sampling
+// of the lights that BSDF-sampled rays can meet (sphere lights, the environment map), so
+// that no light is counted twice.
 
 // Smallest cosine between wo and the facing normal (see Surface.facingNormal).
 const float kMinimumViewCosine = 1e-4;
@@ -97,7 +98,18 @@ bool continuePath(inout PathState path)
     SurfaceHit hit = findSurface(path.origin, path.direction, path.insideSign, path.cone,
                                  path.marchStart, path.containing);
     if (!hit.found) {
-        path.radiance += path.throughput * environmentRadiance(path.direction);
+        float weight = 1.0;
+#if HAS_ENVIRONMENT_LIGHT
+        // The environment map is a light: weighed against light sampling as a sphere light
+        // is below.
+        if (!path.previousWasDelta)
+            weight = gMultipleImportanceSampling
+                         ? powerHeuristic(path.previousPdf,
+                                          lightPdf(ENVIRONMENT_LIGHT_INDEX,
+                                                   path.previousPosition, path.direction))
+                         : 0.0;
+#endif
+        path.radiance += path.throughput * environmentRadiance(path.direction) * weight;
         return false;
     }
     vec3 direction = path.direction;
@@ -128,7 +140,8 @@ bool continuePath(inout PathState path)
         if (!path.previousWasDelta)
             weight = gMultipleImportanceSampling
                          ? powerHeuristic(path.previousPdf,
-                                          sphereLightPdf(s.lightIndex, path.previousPosition))
+                                          lightPdf(s.lightIndex, path.previousPosition,
+                                                   path.direction))
                          : 0.0;
         path.radiance += path.throughput * s.emission * weight;
     }

@@ -1,7 +1,24 @@
-// Lights: point lights and spherical area lights (emissive spheres), sampled for next-event
-// estimation. One light is chosen per shading point with probability proportional to its
-// power (the host computes the table once, not every pixel). Whether the light is seen is
-// the geometry's business (shadowTransmittance, ray_queries.glsl).
+// Lights, sampled for next-event estimation. One light is chosen per shading point with
+// probability proportional to its power (the host computes the table once, not every
+// pixel); its kind (scene/Lights.h) then chooses a direction towards it. Each kind defines
+// here <prefix>Sample (false where it has no sample to give), and where it is no delta
+// <prefix>Pdf; the dispatchers over the kinds,
+// lightSample and lightPdf, are generated from the table (render/KindDispatchers.cpp) and
+// follow this module. Whether the light is seen is the geometry's business
+// (shadowTransmittance, ray_queries.glsl).
+
+// What light sampling chose at a shading point.
+struct LightSample {
+    vec3 direction;  // unit, from the shading point towards the light
+    float distance;  // how far along it the light lies (FLOAT_MAX for a light at infinity)
+    int target;      // the object the shadow ray ends on (a light that is an object), or -1
+    // What arrives along `direction`, over the densities of choosing it (the light's
+    // selection included): solid angle, or for a point light its 1 / distance^2 in its place.
+    vec3 arriving;
+    // The solid-angle density of choosing `direction`, selection included, which MIS weighs
+    // against the BSDF's; 0 for a point light (no BSDF sample can reach it).
+    float pdf;
+};
 
 int selectLight(float u)
 {
@@ -11,6 +28,22 @@ int selectLight(float u)
     return LIGHT_COUNT - 1;
 }
 
+// --- point lights: a delta ------------------------------------------------------------------
+
+#if HAS_POINT_LIGHTS
+bool pointLightSample(int light, vec3 p, vec2 u, float selection, out LightSample chosen)
+{
+    vec3 toLight = lightPosition(light) - p;
+    float distance = length(toLight);
+    chosen = LightSample(toLight / distance, distance, -1,
+                         lightEmission(light) / (distance * distance * selection), 0.0);
+    return true;
+}
+#endif
+
+// --- sphere lights: emissive spheres, sampled by the cone they subtend ----------------------
+
+#if HAS_SPHERE_LIGHTS
 // The cone a sphere subtends from p, as 1 - cos(thetaMax) computed as sin^2 / (1 + cos)
 // without cancellation, so a sphere of radius 1e-4 at distance 100 keeps its solid angle.
 // False when p is inside the sphere (it has no cone then).
@@ -21,16 +54,6 @@ bool sphereLightCone(vec3 p, int light, out float oneMinusCosThetaMax)
     float sin2ThetaMax = radius * radius / dot(toCenter, toCenter);
     oneMinusCosThetaMax = sin2ThetaMax / (1.0 + sqrt(max(0.0, 1.0 - sin2ThetaMax)));
     return sin2ThetaMax < 1.0 && oneMinusCosThetaMax > 0.0;
-}
-
-// Solid-angle density with which light sampling picks direction `direction` (known to hit
-// the sphere) from p, selection included: what MIS weighs a BSDF-sampled hit against.
-float sphereLightPdf(int light, vec3 p)
-{
-    float oneMinusCosThetaMax;
-    if (!sphereLightCone(p, light, oneMinusCosThetaMax))
-        return 0.0;
-    return lightSelectionProbability(light) * uniformConePdf(oneMinusCosThetaMax);
 }
 
 // True when the ray from `origin` along unit `direction` meets the light's sphere.
@@ -55,70 +78,48 @@ float distanceToSphereLight(vec3 p, vec3 direction, int light)
     return c / (b + sqrt(discriminant));
 }
 
-// Next-event estimation at a non-delta surface: radiance arriving from one chosen light
-// through `wo`'s side, times the BSDF and cosine, divided by the sampling densities.
-// `insideSign` is the side of the solid the incoming ray travelled in. `uSelection` picks the
-// light, `uPoint` the direction towards it (uniform on [0, 1), from the sampler).
-// Each kind of light only chooses the direction, the distance and what arrives; the BSDF and
-// the shadow ray are written once for both: llvmpipe executes both sides of every branch, so
-// a shadow march per kind would be paid twice in scenes with both kinds.
-vec3 directLighting(Surface s, vec3 wo, float tolerance, float insideSign, float uSelection,
-                    vec2 uPoint)
+bool sphereLightSample(int light, vec3 p, vec2 u, float selection, out LightSample chosen)
 {
-#if LIGHT_COUNT == 0
-    return vec3(0.0);
-#else
-    int light = selectLight(uSelection);
-    float selection = lightSelectionProbability(light);
-    if (!(selection > 0.0))
-        return vec3(0.0);
-    // Geometry is measured from the surface point; only the shadow ray starts off the
-    // surface (shadowTransmittance), far enough not to hit it again.
-    vec3 p = s.position;
-    vec3 wi = s.facingNormal;
-    float distance = 0.0;
-    int target = -1;
-    // What arrives along wi, over the density of choosing it (solid angle for sphere lights;
-    // point lights are a delta, their 1 / distance^2 in its place).
-    vec3 arriving = vec3(0.0);
-    // Solid-angle density of light sampling, for MIS; 0 for point lights (no BSDF sample
-    // can reach them).
-    float lightPdf = 0.0;
-#if HAS_POINT_LIGHTS
-    if (isPointLight(light)) {
-        vec3 toLight = lightPosition(light) - p;
-        distance = length(toLight);
-        wi = toLight / distance;
-        arriving = lightEmission(light) / (distance * distance * selection);
-    }
-#endif
-#if HAS_SPHERE_LIGHTS
-#if HAS_POINT_LIGHTS
-    else
-#endif
-    {
-        float oneMinusCosThetaMax;
-        if (!sphereLightCone(p, light, oneMinusCosThetaMax))
-            return vec3(0.0);
-        vec3 axis = normalize(lightPosition(light) - p);
-        wi = basisAround(axis) * sampleUniformCone(uPoint, oneMinusCosThetaMax);
-        distance = distanceToSphereLight(p, wi, light);
-        target = lightObject(light);
-        lightPdf = selection * uniformConePdf(oneMinusCosThetaMax);
-        arriving = lightEmission(light) / lightPdf;
-    }
-#endif
-    float cosI = dot(s.facingNormal, wi);
-    if (cosI <= 0.0)
-        return vec3(0.0);
-    vec3 f = bsdfEvaluate(s, wo, wi);
-    if (maxComponent(f) <= 0.0)
-        return vec3(0.0);
-    vec3 transmittance = shadowTransmittance(s, wi, distance, insideSign, tolerance, target);
-    if (maxComponent(transmittance) <= 0.0)
-        return vec3(0.0);
-    float weight = lightPdf > 0.0 && gMultipleImportanceSampling ? powerHeuristic(lightPdf, bsdfPdf(s, wo, wi))
-                                                  : 1.0;
-    return f * cosI * transmittance * arriving * weight;
-#endif
+    float oneMinusCosThetaMax;
+    if (!sphereLightCone(p, light, oneMinusCosThetaMax))
+        return false;
+    vec3 axis = normalize(lightPosition(light) - p);
+    vec3 wi = basisAround(axis) * sampleUniformCone(u, oneMinusCosThetaMax);
+    float pdf = selection * uniformConePdf(oneMinusCosThetaMax);
+    chosen = LightSample(wi, distanceToSphereLight(p, wi, light), lightObject(light),
+                         lightEmission(light) / pdf, pdf);
+    return true;
 }
+
+// The solid-angle density with which sphereLightSample picks `direction` (known to meet the
+// sphere) from p, before selection.
+float sphereLightPdf(int light, vec3 p, vec3 direction)
+{
+    float oneMinusCosThetaMax;
+    if (!sphereLightCone(p, light, oneMinusCosThetaMax))
+        return 0.0;
+    return uniformConePdf(oneMinusCosThetaMax);
+}
+#endif
+
+// --- the environment map: sampled by its own distribution (environment.glsl) ---------------
+
+#if HAS_ENVIRONMENT_LIGHT
+// Towards the map's brighter texels (sampleEnvironmentMap); none where the direction chosen
+// brings nothing (a texel the filter only borders on, or the environment switched off).
+bool environmentLightSample(int light, vec3 p, vec2 u, float selection, out LightSample chosen)
+{
+    EnvironmentMapSample map = sampleEnvironmentMap(u);
+    vec3 radiance = environmentRadiance(map.direction);
+    if (!(map.pdf > 0.0) || maxComponent(radiance) <= 0.0)
+        return false;
+    float pdf = selection * map.pdf;
+    chosen = LightSample(map.direction, FLOAT_MAX, -1, radiance / pdf, pdf);
+    return true;
+}
+
+float environmentLightPdf(int light, vec3 p, vec3 direction)
+{
+    return environmentMapPdf(direction);
+}
+#endif

@@ -31,7 +31,7 @@ int nearestExcludedSphereLight(vec3 origin, vec3 direction, float start, out flo
     int nearest = -1;
     t = FLOAT_MAX;
     for (int light = 0; light < LIGHT_COUNT && loopIterationAllowed(); ++light) {
-        if (isPointLight(light) || lightCullingBit(light) == 0u)
+        if (lightCullingBit(light) == 0u)  // no sphere, or one that is marched
             continue;
         float crossing =
             raySphereCrossing(origin, direction, lightPosition(light), lightRadius(light), start);
@@ -314,7 +314,7 @@ bool exactShapesBlock(Surface s, vec3 wi, float cosLeaving, float distance, floa
 bool excludedSphereLightsBlock(vec3 origin, vec3 wi, float maxDistance, int target)
 {
     for (int light = 0; light < LIGHT_COUNT && loopIterationAllowed(); ++light)
-        if (!isPointLight(light) && lightCullingBit(light) != 0u && lightObject(light) != target &&
+        if (lightCullingBit(light) != 0u && lightObject(light) != target &&
             raySphereCrossing(origin, wi, lightPosition(light), lightRadius(light), 0.0) <
                 maxDistance)
             return true;

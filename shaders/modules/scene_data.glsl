@@ -8,12 +8,11 @@
 // uniform read inside a branch pixel by pixel: scene 1 gained 1.11x from its light's record
 // read at a constant index alone) and the accessors that decode each record are generated
 // from the records' layouts (shadergen/SceneRecords.h) into the uniforms' piece of the
-// shader. A light is a point light where it has no object.
-bool isPointLight(int light) { return lightObject(light) < 0; }
+// shader.
 
-// The pigment and material codes (PIGMENT_*, MATERIAL_*) are generated #defines
-// (shadergen/ShaderCodes.h), from the kinds' descriptions in scene/Pigments.h and
-// scene/Materials.h.
+// The pigment, material and light codes (PIGMENT_*, MATERIAL_*, LIGHT_*) are generated
+// #defines (shadergen/ShaderCodes.h), from the kinds' descriptions in scene/Pigments.h,
+// scene/Materials.h and scene/Lights.h.
 
 // An object that refracts nothing: a dielectric of index exactly 1, between equal media.
 // It has no interface, so light passes it unbent, tinted by its pigment. A constant false in

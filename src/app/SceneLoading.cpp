@@ -1,6 +1,7 @@
 #include "app/SceneLoading.h"
 
 #include "io/ImageFile.h"
+#include "render/EnvironmentMap.h"
 #include "scene/SceneFeatures.h"
 #include "scene/SceneParser.h"
 
@@ -23,6 +24,9 @@ scene::Scene loadScene(const std::filesystem::path& path)
                                          error.what());
             }
         }
+    // Read whole and its distribution built, so that a file whose pixels cannot be read
+    // fails here too, not only one whose header cannot.
+    render::loadSceneEnvironmentMap(scene);
     return scene;
 }
 
@@ -39,6 +43,8 @@ std::vector<std::filesystem::path> filesOfScene(const std::filesystem::path& sce
     for (const scene::Pigment& pigment : scene.pigments)
         if (pigment.kind == scene::PigmentKind::Texture)
             add(pigment.texturePath);
+    if (scene.environment.kind == scene::EnvironmentKind::Map)
+        add(scene.environment.mapPath);
     return files;
 }
 

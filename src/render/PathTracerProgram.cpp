@@ -114,8 +114,10 @@ shadergen::ShaderSource assemblePathTracerSource(const shadergen::SceneShaderCod
     } else {
         module("ray_queries_traced.glsl");
     }
-    module("lights.glsl");
     module("environment.glsl");
+    module("lights.glsl");
+    generated("<generated: the dispatchers over the light kinds>", shadergen::lightDispatchers());
+    module("direct_lighting.glsl");
     module("integrator.glsl");
     module("path_tracer_main.glsl");
     module(compute ? "compute_kernel.glsl" : "fragment_kernel.glsl");

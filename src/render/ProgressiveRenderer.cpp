@@ -29,6 +29,13 @@ int coarseSide(int side, int divisor)
     return std::max(1, (side + divisor - 1) / divisor);
 }
 
+std::optional<EnvironmentMapTextures> uploadEnvironmentTextures(const EnvironmentMap* map)
+{
+    if (map == nullptr)
+        return std::nullopt;
+    return uploadEnvironmentMap(*map);
+}
+
 }  // namespace
 
 void checkRenderSize(int width, int height)
@@ -72,6 +79,8 @@ ProgressiveRenderer::ProgressiveRenderer(PreparedScene prepared, const KernelCho
                 std::make_unique<PathTracerProgram>(prepared.pathTracerSource, kernel.kernel,
                                                     defaultShaderDirectory()))),
       pigmentTextures_(loadPigmentTextures(uniforms_.textureLayers)),
+      environmentMap_(std::move(prepared.environmentMap)),
+      environmentTextures_(uploadEnvironmentTextures(environmentMap_.get())),
       targets_(width, height),
       toneMapper_(defaultShaderDirectory()),
       tileSampleTargets_(gl::createTexture2D(GL_R32F, 1, 1, GL_RED, GL_FLOAT, nullptr))
@@ -95,12 +104,19 @@ void ProgressiveRenderer::generateDriverCode()
     targets_.previous().estimate.bind(kEstimateUnit);
     targets_.previous().moments.bind(kMomentsUnit);
     pigmentTextures_.texture.bind(kPigmentTexturesUnit);
+    bindEnvironmentTextures();
     program_->trace(targets_.next(), {0, 0, 1, 1}, width(), height(), triangle_);
     // Every uniform the shader declares is set by now: the scene's and the settings' by
     // uploadAll, the draw's by setDrawUniforms, the compute kernel's region by trace.
     program_->uniforms().checkEveryDeclaredSet();
     glFinish();
     gl::throwOnGlError("generating the shader's code");
+}
+
+void ProgressiveRenderer::bindEnvironmentTextures() const
+{
+    if (environmentTextures_)
+        environmentTextures_->bind();
 }
 
 void ProgressiveRenderer::uploadAll()
@@ -115,6 +131,9 @@ void ProgressiveRenderer::uploadAll()
     uniforms.set("uPreviousMoments", kMomentsUnit);
     uniforms.set("uPigmentTextures", kPigmentTexturesUnit);
     uniforms.set("uTileSampleTargets", kTileSampleTargetsUnit);
+    // Their units whether or not the scene has a map: a shader without one reads neither.
+    uniforms.set("uEnvironmentMap", EnvironmentMapTextures::kRadianceUnit);
+    uniforms.set("uEnvironmentDistribution", EnvironmentMapTextures::kDistributionUnit);
     gl::throwOnGlError("uploading the scene");
 }
 
@@ -145,16 +164,22 @@ ReloadDecision ProgressiveRenderer::setScene(const scene::Scene& original,
                                                   defaultShaderDirectory())
             : nullptr;
     std::optional<PigmentTextures> textures;
-    if (decision.reloadTextures)
+    std::optional<EnvironmentMapTextures> environmentTextures;
+    if (decision.reloadTextures) {
         textures = loadPigmentTextures(prepared.uniforms.textureLayers);
+        environmentTextures = uploadEnvironmentTextures(prepared.environmentMap.get());
+    }
 
     scene_ = std::move(prepared.visible);
     code_ = std::move(prepared.code);
     uniforms_ = std::move(prepared.uniforms);
     if (program)
         program_ = std::move(program);
-    if (textures)
+    if (textures) {
         pigmentTextures_ = std::move(*textures);
+        environmentTextures_ = std::move(environmentTextures);
+    }
+    environmentMap_ = std::move(prepared.environmentMap);
     uploadAll();
     restartAccumulation();
     if (decision.rebuildShader)
@@ -166,7 +191,7 @@ void ProgressiveRenderer::setCamera(const scene::Camera& camera)
 {
     scene_.camera = camera;
     // The scene's bounds hold the camera, and the tolerances follow the bounds.
-    uniforms_ = packSceneUniforms(scene_, code_);
+    uniforms_ = packSceneUniforms(scene_, code_, environmentMap_.get());
     uploadAll();
     clearAccumulation();
 }
@@ -255,6 +280,7 @@ void ProgressiveRenderer::renderPreview(int divisor, int maxBounces)
     source.estimate.bind(kEstimateUnit);
     source.moments.bind(kMomentsUnit);
     pigmentTextures_.texture.bind(kPigmentTexturesUnit);
+    bindEnvironmentTextures();
     program_->trace(targets_.next(), {0, 0, previewWidth, previewHeight}, width(), height(),
                     triangle_);
     uniforms.set("uImageSize",
@@ -322,6 +348,7 @@ bool ProgressiveRenderer::drawFrame(const std::function<bool()>& keepGoing, int 
     source.estimate.bind(kEstimateUnit);
     source.moments.bind(kMomentsUnit);
     pigmentTextures_.texture.bind(kPigmentTexturesUnit);
+    bindEnvironmentTextures();
     tileSampleTargets_.bind(kTileSampleTargetsUnit);
     for (int row = 0; row < height();) {
         if (row > 0 && keepGoing && !keepGoing())

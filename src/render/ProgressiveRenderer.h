@@ -4,6 +4,7 @@
 #include "film/Accumulation.h"
 #include "render/AccumulationTargets.h"
 #include "film/AdaptiveSampling.h"
+#include "render/EnvironmentMapTextures.h"
 #include "render/PathTracerProgram.h"
 #include "render/ReloadDecision.h"
 #include "settings/RenderSettings.h"
@@ -17,6 +18,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -134,6 +136,7 @@ private:
                         int height, const settings::RenderSettings& settings);
     void uploadAll();
     void setDrawUniforms(int samplesPerFrame, int sampleTarget, int tileSize);
+    void bindEnvironmentTextures() const;
     void generateDriverCode();
     void restartAccumulation();
     bool drawFrame(const std::function<bool()>& keepGoing, int samples, int target);
@@ -149,6 +152,10 @@ private:
     SceneUniforms uniforms_;
     std::unique_ptr<PathTracerProgram> program_;
     PigmentTextures pigmentTextures_;
+    // Where the scene has an environment map: the map (its power weighs its light's
+    // selection) and its textures.
+    std::shared_ptr<const EnvironmentMap> environmentMap_;
+    std::optional<EnvironmentMapTextures> environmentTextures_;
     AccumulationTargets targets_;
     ToneMapper toneMapper_;
     gl::VertexArray triangle_;

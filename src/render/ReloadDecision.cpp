@@ -66,8 +66,11 @@ ReloadDecision decideReload(const shadergen::SceneShaderCode& shownCode, const S
                                  withoutCommentLines(editedCode.sceneFunctions) ||
                              shownCode.userSdfFiles != editedCode.userSdfFiles ||
                              anyChanged(editedCode.userSdfFiles, changedFiles);
+    const fs::path& editedMap = editedUniforms.environment.mapPath;
     decision.reloadTextures = shownUniforms.textureLayers != editedUniforms.textureLayers ||
-                              anyChanged(editedUniforms.textureLayers, changedFiles);
+                              anyChanged(editedUniforms.textureLayers, changedFiles) ||
+                              shownUniforms.environment.mapPath != editedMap ||
+                              (!editedMap.empty() && anyChanged({editedMap}, changedFiles));
     decision.changesNothing = !decision.rebuildShader && !decision.reloadTextures &&
                               sameCodeAndArrays(shownCode, editedCode) &&
                               shownUniforms == editedUniforms;

@@ -16,7 +16,8 @@ namespace render {
 struct ReloadDecision {
     // The generated code differs, or a user SDF file it includes changed on disk.
     bool rebuildShader = false;
-    // The scene's texture files differ (another file, another order), or one changed on disk.
+    // The scene's texture files or environment map differ (another file, another order), or
+    // one changed on disk.
     bool reloadTextures = false;
     // Nothing the GPU is given differs: the same code, the same number in every uniform, no
     // file it reads changed. An edit of a comment or of spacing, or a number written another

@@ -13,7 +13,9 @@ PreparedScene prepareScene(const scene::Scene& scene, const shadergen::ShaderBui
     PreparedScene prepared;
     prepared.visible = scene::dropInvisibleObjects(scene);
     prepared.code = generateSceneShaderCode(prepared.visible, build);
-    prepared.uniforms = packSceneUniforms(prepared.visible, prepared.code);
+    prepared.environmentMap = loadSceneEnvironmentMap(prepared.visible);
+    prepared.uniforms =
+        packSceneUniforms(prepared.visible, prepared.code, prepared.environmentMap.get());
     prepared.pathTracerSource = assemblePathTracerSource(prepared.code, shaderDirectory, kernel);
     return prepared;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // The one preparation stage between a parsed scene and the GPU: objects that do nothing to
-// light are dropped, the shader code is generated for what is left, its numbers are packed
-// and the path-tracing shader is assembled for a kernel. Pure (it reads shader files, never GL state): the
+// light are dropped, the shader code is generated for what is left, the environment map is
+// read, its numbers are packed and the path-tracing shader is assembled for a kernel. Pure (it
+// reads shader and image files, never GL state): the
 // renderer, `--features`, `--print-shader` and the benchmarks all prepare a scene here, so
 // they all see the same visible scene, features and source.
 #include "settings/PathKernel.h"
@@ -12,6 +13,7 @@
 #include "scene/Scene.h"
 
 #include <filesystem>
+#include <memory>
 
 namespace render {
 
@@ -19,6 +21,8 @@ struct PreparedScene {
     scene::Scene visible;      // without its invisible objects (scene/InvisibleObjects.h)
     shadergen::SceneShaderCode code;      // code.features: what the shader is built for
     SceneUniforms uniforms;    // every number the shader reads from the scene
+    // The environment map, read and made ready for sampling; nullptr where there is none.
+    std::shared_ptr<const EnvironmentMap> environmentMap;
     shadergen::ShaderSource pathTracerSource;  // for the kernel asked (fragment or compute)
 };
 

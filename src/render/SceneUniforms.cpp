@@ -1,6 +1,7 @@
 #include "render/SceneUniforms.h"
 
 #include "render/ProgramUniforms.h"
+#include "scene/Lights.h"
 #include "settings/SettingsTable.h"
 #include "shadergen/SceneRecords.h"
 
@@ -14,11 +15,6 @@ using namespace scene;
 namespace {
 
 constexpr float kPi = 3.14159265358979f;
-
-double average(const glm::dvec3& v)
-{
-    return (v.x + v.y + v.z) / 3.0;
-}
 
 // A row of sceneValueUniforms(): the GLSL type follows from what `value` returns.
 template <typename Value>
@@ -74,7 +70,18 @@ const std::vector<SceneValueUniform>& sceneValueUniforms()
                         }),
         sceneValue<glm::vec3>("uEnvironmentColor", "environment.glsl",
                               [](S s) { return s.scene.environment.color; }),
-        // The culling bits of every sphere light that has one: rays leave those out of their
+        // An environment map's scale and its turn about +y, as (cos, sin) (environment.glsl).
+        sceneValue<float>(
+            "uEnvironmentIntensity", "environment.glsl",
+            [](S s) { return s.scene.environment.intensity; }, "HAS_ENVIRONMENT_MAP"),
+        sceneValue<glm::vec2>(
+            "uEnvironmentRotation", "environment.glsl",
+            [](S s) {
+                const float angle = s.scene.environment.rotationDegrees * kPi / 180.0f;
+                return glm::vec2(std::cos(angle), std::sin(angle));
+            },
+            "HAS_ENVIRONMENT_MAP"),
+        // The culling bits of every light that is an object and has one: rays leave those out of their
         // marches and intersect the spheres exactly instead (ray_queries_traced.glsl).
         sceneValue<unsigned int>("uSphereLightPieces", "scene_data.glsl",
                                  [](S s) { return s.scene.sphereLightPieces; }),
@@ -91,22 +98,6 @@ std::vector<shadergen::UniformDeclaration> pathTracerUniformDeclarations()
     return declarations;
 }
 
-// In double: the power of a bright, large sphere light (radiance near the float maximum)
-// overflows float, and one infinite power would make every selection probability NaN.
-std::vector<double> lightPowers(const Scene& scene)
-{
-    constexpr double kPiDouble = 3.14159265358979323846;
-    std::vector<double> powers;
-    for (const PointLight& light : scene.pointLights)
-        powers.push_back(4.0 * kPiDouble * average(glm::dvec3(light.intensity)));
-    for (const SphereLight& light : sphereLights(scene)) {
-        const double radius = light.radius;
-        powers.push_back(4.0 * kPiDouble * kPiDouble * radius * radius *
-                         average(glm::dvec3(light.radiance)));
-    }
-    return powers;
-}
-
 bool SceneUniforms::operator==(const SceneUniforms& other) const
 {
     return objects == other.objects && pigments == other.pigments &&
@@ -120,10 +111,14 @@ bool SceneUniforms::operator==(const SceneUniforms& other) const
            cameraFrame.forward == other.cameraFrame.forward && cameraEye == other.cameraEye &&
            tanHalfFovy == other.tanHalfFovy && bounds.center == other.bounds.center &&
            bounds.radius == other.bounds.radius && environment.kind == other.environment.kind &&
-           environment.color == other.environment.color;
+           environment.color == other.environment.color &&
+           environment.mapPath == other.environment.mapPath &&
+           environment.intensity == other.environment.intensity &&
+           environment.rotationDegrees == other.environment.rotationDegrees;
 }
 
-SceneUniforms packSceneUniforms(const Scene& scene, const shadergen::SceneShaderCode& code)
+SceneUniforms packSceneUniforms(const Scene& scene, const shadergen::SceneShaderCode& code,
+                                const EnvironmentMap* environmentMap)
 {
     SceneUniforms packed;
 
@@ -163,36 +158,38 @@ SceneUniforms packSceneUniforms(const Scene& scene, const shadergen::SceneShader
         shadergen::packRecord(shadergen::conductorRecordLayout(), conductor, packed.conductors);
     }
 
-    const std::vector<SphereLight> spheres = sphereLights(scene);
-    const std::vector<double> powers = lightPowers(scene);
+    packed.bounds = computeSceneBounds(scene);
+    LightPowerContext context;
+    context.sceneRadius = packed.bounds.radius;
+    if (environmentMap != nullptr)
+        context.environmentIntegral = environmentMap->integral;
+    const std::vector<Light> lights = sceneLights(scene);
+    const std::vector<double> powers = lightPowers(lights, context);
     double totalPower = 0.0;
     for (double power : powers)
         totalPower += power;
     std::vector<int> lightOfObject(scene.objects.size(), -1);
     double cumulativeProbability = 0.0;
-    for (std::size_t i = 0; i < powers.size(); ++i) {
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        const Light& light = lights[i];
         shadergen::LightRecord record;
         record.selectionProbability =
             totalPower > 0.0 ? static_cast<float>(powers[i] / totalPower) : 0.0f;
         cumulativeProbability += totalPower > 0.0 ? powers[i] / totalPower : 0.0;
         // The last light closes the table exactly at 1 whatever the rounding.
         record.cumulativeProbability =
-            i + 1 == powers.size() ? 1.0f : static_cast<float>(cumulativeProbability);
-        if (i < scene.pointLights.size()) {
-            const PointLight& light = scene.pointLights[i];
-            record.position = light.position;
-            record.emission = light.intensity;
-        } else {
-            const SphereLight& light = spheres[i - scene.pointLights.size()];
+            i + 1 == lights.size() ? 1.0f : static_cast<float>(cumulativeProbability);
+        record.position = light.position;
+        record.radius = light.radius;
+        record.emission = light.emission;
+        record.object = light.object;
+        record.kind = describe(light.kind).code;
+        // A light that is an object takes the object's culling bit: rays leave it out of
+        // their marches and meet it exactly (ray_queries_traced.glsl).
+        if (light.object >= 0) {
             lightOfObject[light.object] = static_cast<int>(i);
-            record.position = light.center;
-            record.radius = light.radius;
-            record.emission = light.radiance;
-            record.object = light.object;
-            record.cullingBit = static_cast<std::size_t>(light.object) <
-                                        code.objectCullingBits.size()
-                                    ? code.objectCullingBits[light.object]
-                                    : 0u;
+            if (static_cast<std::size_t>(light.object) < code.objectCullingBits.size())
+                record.cullingBit = code.objectCullingBits[light.object];
             packed.sphereLightPieces |= record.cullingBit;
         }
         shadergen::packRecord(shadergen::lightRecordLayout(), record, packed.lights);
@@ -214,7 +211,6 @@ SceneUniforms packSceneUniforms(const Scene& scene, const shadergen::SceneShader
     packed.tanHalfFovy =
         std::tan(0.5f * scene.camera.verticalFieldOfViewDegrees * kPi / 180.0f);
     packed.lens = scene.camera.lens.value_or(ThinLens{});
-    packed.bounds = computeSceneBounds(scene);
     packed.environment = scene.environment;
     return packed;
 }

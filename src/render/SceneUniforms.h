@@ -1,4 +1,5 @@
 #pragma once
+#include "render/EnvironmentMap.h"
 #include "settings/OptionValues.h"
 #include "settings/RenderSettings.h"
 #include "shadergen/SceneShaderGenerator.h"
@@ -26,7 +27,7 @@ struct SceneUniforms {
     // Per finish, the rough conductor's complex index of refraction (scene_data.glsl).
     std::vector<glm::vec4> conductors;
     std::vector<glm::vec4> lights;
-    // The culling bits of the sphere lights that have one (scene_data.glsl).
+    // The culling bits of the lights that are objects and have one (scene_data.glsl).
     std::uint32_t sphereLightPieces = 0;
     // Image files in texture-array layer order; pigments refer to them by layer.
     std::vector<std::filesystem::path> textureLayers;
@@ -43,11 +44,10 @@ struct SceneUniforms {
     bool operator!=(const SceneUniforms& other) const { return !(*this == other); }
 };
 
-SceneUniforms packSceneUniforms(const scene::Scene& scene, const shadergen::SceneShaderCode& code);
-
-// Emitted power of each light, the quantity lights are selected by: 4 pi I for a point
-// light, 4 pi^2 r^2 L for a sphere of radiance L (channels averaged).
-std::vector<double> lightPowers(const scene::Scene& scene);
+// `environmentMap`: the scene's map (render/EnvironmentMap.h), whose power its light's
+// selection probability needs; nullptr where the scene has none.
+SceneUniforms packSceneUniforms(const scene::Scene& scene, const shadergen::SceneShaderCode& code,
+                                const EnvironmentMap* environmentMap = nullptr);
 
 // What the uniforms' values come from.
 struct UniformSources {

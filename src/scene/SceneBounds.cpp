@@ -1,5 +1,6 @@
 #include "scene/SceneBounds.h"
 
+#include "scene/Lights.h"
 #include "scene/PrimitiveKinds.h"
 
 #include <algorithm>
@@ -145,8 +146,10 @@ SceneBounds computeSceneBounds(const Scene& scene)
 {
     Box3 box;
     box.add(scene.camera.eye);
-    for (const PointLight& light : scene.pointLights)
-        box.add(light.position);
+    // The lights that have a place but are no object (the objects follow).
+    for (const Light& light : sceneLights(scene))
+        if (describe(light.kind).emitter == Emitter::DeltaPosition)
+            box.add(light.position);
     for (const SceneObject& object : scene.objects) {
         const ShapeBound bound = boundShape(object.shape);
         if (bound.finite)

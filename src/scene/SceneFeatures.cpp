@@ -56,8 +56,8 @@ SceneFeatures analyseFeatures(const Scene& scene)
         features.pigments.insert(scene.pigments[object.pigment].kind);
     }
     features.thinLens = scene.camera.lens.has_value();
-    features.pointLights = !scene.pointLights.empty();
-    features.sphereLights = !sphereLights(scene).empty();
+    for (const Light& light : sceneLights(scene))
+        features.lights.insert(light.kind);
     features.environment = scene.environment.kind;
     return features;
 }
@@ -76,8 +76,13 @@ SceneFeatures SceneFeatures::everything(const Scene& scene)
     for (const PigmentDescription& pigment : pigmentDescriptions())
         features.pigments.insert(pigment.kind);
     features.nullInterfaces = true;
-    features.pointLights = true;
-    features.sphereLights = true;
+    // Every kind of light but the environment's where the scene has no such light: its code
+    // reads the map's textures, which only a map gives (as only a user SDF's file gives its
+    // function).
+    const bool environmentLight = analyseFeatures(scene).has(LightKind::Environment);
+    for (const LightDescription& light : lightDescriptions())
+        if (light.kind != LightKind::Environment || environmentLight)
+            features.lights.insert(light.kind);
     features.environment = scene.environment.kind;
     return features;
 }
@@ -98,12 +103,7 @@ std::string SceneFeatures::describe() const
     if (nullInterfaces)
         text << "index-1 dielectrics: yes (transparent to shadow rays)\n";
     text << "camera:        " << (thinLens ? "thin lens" : "pinhole") << "\n";
-    std::string lights;
-    if (pointLights)
-        lights += "point";
-    if (sphereLights)
-        lights += std::string(lights.empty() ? "" : ", ") + "sphere";
-    text << "lights:        " << (lights.empty() ? "none" : lights) << "\n";
+    text << "lights:        " << join(lights) << "\n";
     text << "environment:   " << toString(environment) << "\n";
     return text.str();
 }
@@ -116,6 +116,11 @@ const char* toString(MaterialKind kind)
 const char* toString(PigmentKind kind)
 {
     return describe(kind).keyword;
+}
+
+const char* toString(LightKind kind)
+{
+    return describe(kind).name;
 }
 
 const char* toString(EnvironmentKind kind)

@@ -1,4 +1,5 @@
 #pragma once
+#include "scene/Lights.h"
 #include "scene/Scene.h"
 
 #include <filesystem>
@@ -27,12 +28,13 @@ struct SceneFeatures {
     // The camera's thin lens (depth of field); a pinhole without.
     bool thinLens = false;
 
-    bool pointLights = false;
-    bool sphereLights = false;
+    std::set<LightKind> lights;
     EnvironmentKind environment = EnvironmentKind::Sky;
 
     bool has(MaterialKind kind) const { return materials.count(kind) != 0; }
     bool has(PigmentKind kind) const { return pigments.count(kind) != 0; }
+    bool has(LightKind kind) const { return lights.count(kind) != 0; }
+    bool has(EnvironmentKind kind) const { return environment == kind; }
 
     // Every feature the renderer has, with the user SDFs of `scene` (GLSL cannot call a
     // function it was not given): what the general, unspecialised shader is built for.
@@ -46,6 +48,7 @@ SceneFeatures analyseFeatures(const Scene& scene);
 
 const char* toString(MaterialKind kind);
 const char* toString(PigmentKind kind);
+const char* toString(LightKind kind);
 const char* toString(EnvironmentKind kind);
 
 }  // namespace scene

@@ -84,18 +84,22 @@ private:
 
     void parseEnvironment(Environment& environment)
     {
-        const std::string expected = "an environment: none, sky, or a colour 'r g b'";
+        const std::string expected =
+            "an environment: none, sky, a colour 'r g b', or map FILE";
         const Token* token = peek();
         if (token == nullptr)
             fail(expected);
+        const int line = token->line;
         const EnvironmentDescription* kind = findEnvironmentKind(token->text);
         if (kind != nullptr)
             skip();
         else
             // A colour alone is a constant environment: its word may be left out.
             kind = &describe(EnvironmentKind::Constant);
-        environment = {kind->kind, kind->hasColour ? colour("environment radiance")
-                                                   : glm::vec3(0.0f)};
+        environment = Environment();
+        environment.kind = kind->kind;
+        environment.line = line;
+        kind->read(*this, lookup_, environment);
     }
 
     void parseCamera(Camera& camera)

@@ -1,5 +1,6 @@
 #include "shadergen/KindDispatchers.h"
 
+#include "scene/Lights.h"
 #include "scene/Materials.h"
 #include "scene/Pigments.h"
 
@@ -102,6 +103,54 @@ std::string pigmentDispatcher()
             << ")\n        color = " << pigment.glslFunction << arguments << ";\n#endif\n";
     }
     out << "    return color;\n}\n";
+    return out.str();
+}
+
+// The dispatch over the light kinds compiled in: a test of the light's kind for each, left
+// out where the shader has only one kind that could answer (every classic scene), so that the
+// kind is not even read there.
+std::string lightDispatchers()
+{
+    const std::vector<LightDescription>& lights = lightDescriptions();
+    std::ostringstream out;
+    out << "// Generated from the light table (scene/Lights.h).\n\n";
+    auto countOf = [&](bool densityOnly) {
+        std::string sum;
+        for (const LightDescription& light : lights)
+            if (!densityOnly || light.emitter != Emitter::DeltaPosition)
+                sum += (sum.empty() ? "" : " + ") + std::string(light.featureSwitch);
+        return "(" + (sum.empty() ? std::string("0") : sum) + ")";
+    };
+    out << "#define LIGHT_KINDS_COMPILED " << countOf(false) << "\n";
+    out << "#define LIGHT_KINDS_WITH_DENSITY_COMPILED " << countOf(true) << "\n\n";
+    auto test = [&](bool densityOnly, const LightDescription& light) {
+        return std::string("    if (") +
+               (densityOnly ? "LIGHT_KINDS_WITH_DENSITY_COMPILED" : "LIGHT_KINDS_COMPILED") +
+               " == 1 || kind == " + codeName(light) + ")\n";
+    };
+    out << "// Chooses a direction towards `light` from p by its kind's sampler (`selection`: the\n"
+           "// light's selection probability; `u` uniform on [0, 1)^2, from the sampler); false\n"
+           "// where the kind has none to give (p inside a sphere light).\n"
+           "bool lightSample(int light, vec3 p, vec2 u, float selection, out LightSample chosen)\n"
+           "{\n"
+           "    int kind = lightKind(light);\n";
+    for (const LightDescription& light : lights)
+        out << "#if " << light.featureSwitch << "\n"
+            << test(false, light) << "        return " << light.glslPrefix
+            << "Sample(light, p, u, selection, chosen);\n#endif\n";
+    out << "    return false;\n}\n\n";
+    out << "// The solid-angle density with which light sampling picks `direction` from p,\n"
+           "// selection included: what MIS weighs a BSDF-sampled ray that meets `light` against\n"
+           "// (never asked of a delta).\n"
+           "float lightPdf(int light, vec3 p, vec3 direction)\n{\n"
+           "    float pdf = 0.0;\n"
+           "    int kind = lightKind(light);\n";
+    for (const LightDescription& light : lights)
+        if (light.emitter != Emitter::DeltaPosition)
+            out << "#if " << light.featureSwitch << "\n"
+                << test(true, light) << "        pdf = " << light.glslPrefix
+                << "Pdf(light, p, direction);\n#endif\n";
+    out << "    return lightSelectionProbability(light) * pdf;\n}\n";
     return out.str();
 }
 

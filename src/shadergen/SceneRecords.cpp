@@ -72,10 +72,10 @@ const RecordLayout<LightRecord>& lightRecordLayout()
             {&LightRecord::emission, 1, "rgb", "lightEmission", "intensity or radiance"},
             {&LightRecord::selectionProbability, 1, "w", "lightSelectionProbability", ""},
             {&LightRecord::cumulativeProbability, 2, "x", "lightCumulativeProbability", ""},
-            {&LightRecord::object, 2, "y", "lightObject",
-             "a sphere light's object, -1 for a point light"},
+            {&LightRecord::object, 2, "y", "lightObject", "the object that is the light, or -1"},
             {&LightRecord::cullingBit, 2, "z", "lightCullingBit",
-             "a sphere light's culling bit, or 0"},
+             "that object's culling bit, or 0"},
+            {&LightRecord::kind, 2, "w", "lightKind", "a LIGHT_* code (scene/Lights.h)"},
         }};
     return layout;
 }

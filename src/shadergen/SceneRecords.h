@@ -52,15 +52,17 @@ struct ConductorRecord {
     glm::vec3 k{0.0f};
 };
 
-// Per light. Lights are chosen in proportion to their emitted power.
+// Per light. Lights are chosen in proportion to their emitted power; what each kind's
+// record holds is scene/Lights.h's Light.
 struct LightRecord {
     glm::vec3 position{0.0f};  // a point light's position, a sphere's centre
     float radius = 0.0f;
     glm::vec3 emission{0.0f};  // a point light's intensity, a sphere's radiance
     float selectionProbability = 0.0f;
     float cumulativeProbability = 0.0f;
-    int object = -1;           // a sphere light's object; -1 for a point light
-    std::uint32_t cullingBit = 0;  // a sphere light's culling bit, or 0
+    int object = -1;           // the object that is the light, or -1
+    std::uint32_t cullingBit = 0;  // that object's culling bit, or 0
+    int kind = 0;              // a LIGHT_* code (scene/Lights.h)
 };
 
 template <typename Record>

@@ -81,8 +81,12 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
     }
 
     const SceneFeatures& f = code.features;
-    const int lightCount =
-        static_cast<int>(scene.pointLights.size() + sphereLights(scene).size());
+    const std::vector<Light> lights = sceneLights(scene);
+    const int lightCount = static_cast<int>(lights.size());
+    int environmentLight = -1;
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        if (lights[i].kind == LightKind::Environment)
+            environmentLight = static_cast<int>(i);
     std::ostringstream out;
     define(out, "OBJECT_COUNT", static_cast<int>(scene.objects.size()));
     define(out, "OBJECT_ARRAY_SIZE", std::max<int>(1, scene.objects.size()));
@@ -102,8 +106,13 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
     for (const PigmentDescription& pigment : pigmentDescriptions())
         if (pigment.featureSwitch != nullptr)
             define(out, pigment.featureSwitch, f.has(pigment.kind) ? 1 : 0);
-    define(out, "HAS_POINT_LIGHTS", f.pointLights ? 1 : 0);
-    define(out, "HAS_SPHERE_LIGHTS", f.sphereLights ? 1 : 0);
+    for (const LightDescription& light : lightDescriptions())
+        define(out, light.featureSwitch, f.has(light.kind) ? 1 : 0);
+    // Where the environment's light record is (integrator.glsl weighs escaping rays by it).
+    define(out, "ENVIRONMENT_LIGHT_INDEX", environmentLight);
+    for (const EnvironmentDescription& kind : environmentDescriptions())
+        if (kind.featureSwitch != nullptr)
+            define(out, kind.featureSwitch, f.has(kind.kind) ? 1 : 0);
     out << "#define ENVIRONMENT_KIND_FROM_UNIFORM (-1)\n";
     if (specializesFeatures(variant) && environment == EnvironmentBinding::BuiltIn)
         define(out, "ENVIRONMENT_KIND", describe(f.environment).code);

@@ -1,6 +1,7 @@
 #include "shadergen/ShaderCodes.h"
 
 #include "scene/KindCodes.h"
+#include "scene/Lights.h"
 #include "scene/PrimitiveKinds.h"
 #include "scene/Scene.h"
 #include "settings/SettingsTable.h"
@@ -38,6 +39,8 @@ std::string shaderCodeDefines()
         define(out, scene::codeName(pigment), pigment.code);
     for (const scene::EnvironmentDescription& environment : scene::environmentDescriptions())
         define(out, scene::codeName(environment), environment.code);
+    for (const scene::LightDescription& light : scene::lightDescriptions())
+        define(out, scene::codeName(light), light.code);
     out << settings::choiceDefines();
     return out.str();
 }

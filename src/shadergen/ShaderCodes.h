@@ -1,8 +1,9 @@
 #pragma once
 // The integer codes the shaders share with the host, as #defines generated from the tables
-// that define them: the kinds of primitive, CSG operator, material, pigment and environment
-// (scene/Primitives.h, CsgOperators.h, Materials.h, Pigments.h, Environments.h), the shape
-// interpreter's opcodes, and the settings' choices (settings/Choices.h: SAMPLER_*, FRESNEL_*). No shader module writes a code as a number.
+// that define them: the kinds of primitive, CSG operator, material, pigment, environment and
+// light (scene/Primitives.h, CsgOperators.h, Materials.h, Pigments.h, Environments.h,
+// Lights.h), the shape interpreter's opcodes, and the settings' choices (settings/Choices.h:
+// SAMPLER_*, FRESNEL_*, MASKING_*). No shader module writes a code as a number.
 #include <string>
 
 namespace shadergen {

@@ -107,6 +107,30 @@ TEST(ReloadDecision, AnEditedTextureReloadsTexturesWithoutARebuild)
     EXPECT_FALSE(untouched.reloadTextures);
 }
 
+// An environment map's file is a texture: edited on disk or replaced, it is uploaded again;
+// its intensity and rotation are values.
+TEST(ReloadDecision, AnEditedEnvironmentMapReloadsTexturesAndItsIntensityIsAValue)
+{
+    auto withMap = [](const std::string& options) {
+        return scene("0 1 4", "0.8 0.1 0.1", "0 0 0  0 0 0 0", "0 0 sphere 0 0.5 0  0.5",
+                     "environment map sky-sun.hdr " + options + "\n");
+    };
+    const fs::path map = scene::FileLookup::dataDirectory() / "textures" / "sky-sun.hdr";
+    const ReloadDecision edited = decide(withMap(""), withMap(""), {map});
+    EXPECT_TRUE(edited.reloadTextures);
+    EXPECT_FALSE(edited.rebuildShader);
+    const ReloadDecision replaced = decide(withMap(""), scene("0 1 4", "0.8 0.1 0.1",
+                                                              "0 0 0  0 0 0 0",
+                                                              "0 0 sphere 0 0.5 0  0.5",
+                                                              "environment map octants.exr\n"));
+    EXPECT_TRUE(replaced.reloadTextures);
+    const ReloadDecision turned = decide(withMap(""), withMap("intensity 2 rotate 30"));
+    EXPECT_FALSE(turned.reloadTextures);
+    EXPECT_FALSE(turned.rebuildShader);
+    EXPECT_FALSE(turned.changesNothing);
+    EXPECT_TRUE(decide(withMap(""), withMap("")).changesNothing);
+}
+
 TEST(ReloadDecision, TheSameSceneWrittenAnotherWayChangesNothing)
 {
     EXPECT_TRUE(decide(scene(), scene()).changesNothing) << "saved unchanged";

@@ -97,17 +97,18 @@ TEST_F(FileWatcherTest, NewBytesOfTheSameSizeAreAChange)
     EXPECT_TRUE(watcher.changedFiles().empty()) << "a change is reported once";
 }
 
-TEST(SceneFiles, AreTheSceneItsUserSdfFilesAndItsTextures)
+TEST(SceneFiles, AreTheSceneItsUserSdfFilesItsTexturesAndItsEnvironmentMap)
 {
     const std::string text =
-        "0 1 4\n0 0 0\n0 1 0\n45\n0\n"
+        "environment map sky-sun.hdr\n0 1 4\n0 0 0\n0 1 0\n45\n0\n"
         "2\ntexmap brick.ppm 1\nsolid 1 1 1\n1\n0 0 0  0 0 0 0\n"
         "2\n0 0 twisted_bar 0 0.4 0\n1 0 sphere 0 0 0 1\n";
     const std::vector<fs::path> files = app::filesOfScene("my.in", scene_tests::parse(text));
-    ASSERT_EQ(files.size(), 3u);
+    ASSERT_EQ(files.size(), 4u);
     EXPECT_EQ(files[0], fs::path("my.in"));
     EXPECT_EQ(files[1].filename(), "twisted_bar.glsl");
     EXPECT_EQ(files[2].filename(), "brick.ppm");
+    EXPECT_EQ(files[3].filename(), "sky-sun.hdr");
 }
 
 TEST(SnapshotFiles, AreNamedAfterTheSceneAndTheSamplesInTheCurrentOrOutputFolder)

@@ -4,8 +4,10 @@
 // over (theta, phi) bins, and Pearson's chi-square compares the histogram with the
 // integrals. Bins are chosen from the pdf alone (equal probability along theta and along
 // phi), never from the samples.
+#include "render/EnvironmentMap.h"
 #include "sampling/ShaderSampler.h"
 #include "support/ChiSquare.h"
+#include "support/EnvironmentMapImages.h"
 
 #include <gtest/gtest.h>
 
@@ -551,6 +553,109 @@ const RoughCase kRoughWeightCases[] = {
 
 INSTANTIATE_TEST_SUITE_P(Ggx, RoughMaterialWeights, ::testing::ValuesIn(kRoughWeightCases),
                          roughName);
+
+// --- the environment map's sampler (environment.glsl), in world space ---------------------
+
+struct EnvironmentCase {
+    const char* name;
+    io::Image image;
+    float rotationDegrees;
+    int split;  // grid cells along each side of a texel
+};
+
+// The grid's cells split each texel into `split` x `split` (theta from +y, phi from the map's
+// left edge, turned with the map). The density is constant over each texel, in solid angle,
+// so the pdf at a cell's centre times the cell's solid angle is the cell's probability
+// exactly; and cells smaller than a texel catch a sampler that puts the right share in each
+// texel but spreads it wrongly inside.
+GridLayout environmentGrid(const render::EnvironmentMap& map, float rotationDegrees, int split)
+{
+    const float angle = glm::radians(rotationDegrees);
+    const float c = std::cos(angle);
+    const float s = std::sin(angle);
+    // The map's frame turned about +y (x' = c x + s z, z' = -s x + c z).
+    auto turned = [&](const glm::vec3& m) { return glm::vec3(c * m.x + s * m.z, m.y, -s * m.x + c * m.z); };
+    GridLayout grid;
+    grid.thetaCells = map.height * split;
+    grid.phiCells = map.width * split;
+    grid.thetaMax = static_cast<float>(kPi);
+    // Column 0's edge faces +z, a quarter of the way across -x, the top row +y.
+    grid.frame = glm::mat3(turned({0, 0, 1}), turned({-1, 0, 0}), glm::vec3(0, 1, 0));
+    return grid;
+}
+
+class EnvironmentMapSampling : public ::testing::TestWithParam<int> {};
+
+EnvironmentCase environmentCase(int which)
+{
+    using namespace testing_support;
+    switch (which) {
+    case 0: {
+        SkyWithSun sky;
+        sky.sunRadiusDegrees = 8.0;
+        sky.sunRadiance = 40.0;
+        return {"sky_with_sun_turned_30_degrees", skyWithSunEnvironmentMap(64, 32, sky), 30.0f,
+                2};
+    }
+    case 1:
+        return {"octants", octantEnvironmentMap(32, 16), 0.0f, 2};
+    case 2:
+        return {"black_but_a_patch_turned_minus_100_degrees",
+                patchEnvironmentMap(48, 24, 40, 3, 5, 4, glm::vec3(5.0f, 1.0f, 0.5f)), -100.0f, 2};
+    default: {
+        // Texels of 90 degrees: the bins split each many times, down to the poles.
+        io::Image image(4, 2, 3);
+        const float values[8] = {1.0f, 4.0f, 0.5f, 2.0f, 3.0f, 0.25f, 1.5f, 6.0f};
+        for (int texel = 0; texel < 8; ++texel)
+            for (int channel = 0; channel < 3; ++channel)
+                image.at(texel % 4, texel / 4, channel) = values[texel];
+        return {"four_by_two_texels", image, 0.0f, 64};
+    }
+    }
+}
+
+TEST_P(EnvironmentMapSampling, DirectionsFollowEnvironmentMapPdf)
+{
+    const EnvironmentCase environment = environmentCase(GetParam());
+    const render::EnvironmentMap map = render::buildEnvironmentMap(environment.image);
+    SamplingCase samplingCase;
+    samplingCase.routine = SamplingRoutine::EnvironmentMap;
+    samplingCase.environmentMap = &map;
+    samplingCase.environmentRotationDegrees = environment.rotationDegrees;
+    expectSamplesFollowPdf(samplingCase,
+                           environmentGrid(map, environment.rotationDegrees, environment.split),
+                           std::string("sampleEnvironmentMap, ") + environment.name);
+}
+
+// The density the shader returns integrates to 1 over the sphere, and gives each texel the
+// probability the host's distribution does: the pdf is the sampler's, not another.
+TEST_P(EnvironmentMapSampling, PdfIntegratesToOneAndMatchesTheHostsDistribution)
+{
+    const EnvironmentCase environment = environmentCase(GetParam());
+    const render::EnvironmentMap map = render::buildEnvironmentMap(environment.image);
+    SamplingCase samplingCase;
+    samplingCase.routine = SamplingRoutine::EnvironmentMap;
+    samplingCase.environmentMap = &map;
+    samplingCase.environmentRotationDegrees = environment.rotationDegrees;
+    const GridLayout grid = environmentGrid(map, environment.rotationDegrees, 1);
+    const std::vector<float> pdf = ShaderSampler().pdfOnGrid(samplingCase, grid);
+    double total = 0.0;
+    double worst = 0.0;
+    for (int row = 0; row < map.height; ++row)
+        for (int column = 0; column < map.width; ++column) {
+            const double mass = pdf[column * map.height + row] * map.texelSolidAngle(row);
+            total += mass;
+            worst = std::max(worst, std::abs(mass - map.texelProbability(column, row)));
+        }
+    EXPECT_NEAR(total, 1.0, 1e-4) << environment.name;
+    EXPECT_LT(worst, 1e-6) << environment.name
+                           << ": some texel's probability differs from the host's by " << worst;
+}
+
+INSTANTIATE_TEST_SUITE_P(Map, EnvironmentMapSampling, ::testing::Values(0, 1, 2, 3),
+                         [](const ::testing::TestParamInfo<int>& info) {
+                             return std::string(environmentCase(info.param).name);
+                         });
 
 }  // namespace
 }  // namespace sampling_tests

@@ -4,6 +4,7 @@
 #include "gl/GlError.h"
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
+#include "render/EnvironmentMapTextures.h"
 #include "render/PathTracerProgram.h"
 #include "render/SceneUniforms.h"
 #include "shadergen/ShaderCodes.h"
@@ -12,6 +13,9 @@
 #include "support/TestPaths.h"
 
 #include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+#include <optional>
 
 namespace sampling_tests {
 
@@ -31,12 +35,14 @@ shadergen::ShaderSource probeSource()
                "#define SHAPE_PARAMETER_ARRAY_SIZE 1\n#define SHAPE_PARAMETERS_READ_ONCE 0\n"
                "#define OBJECT_ARRAY_SIZE 1\n"
                "#define PIGMENT_ARRAY_SIZE 1\n#define FINISH_ARRAY_SIZE 1\n"
-               "#define LIGHT_ARRAY_SIZE 1\n" +
+               "#define LIGHT_ARRAY_SIZE 1\n"
+               "#define HAS_ENVIRONMENT_MAP 1\n#define ENVIRONMENT_KIND_FROM_UNIFORM (-1)\n"
+               "#define ENVIRONMENT_KIND ENVIRONMENT_MAP\n" +
                    shadergen::shaderCodeDefines());
     const std::vector<std::string> modules = {
-        "constants.glsl", "rng.glsl",         "sampler.glsl",         "sampling.glsl",
-        "scene_data.glsl", "fresnel.glsl",    "ggx_albedo_table.glsl", "microfacet.glsl",
-        "materials.glsl"};
+        "constants.glsl",  "rng.glsl",         "sampler.glsl",          "sampling.glsl",
+        "scene_data.glsl", "fresnel.glsl",     "ggx_albedo_table.glsl", "microfacet.glsl",
+        "materials.glsl",  "environment.glsl"};
     source.add("<generated: the uniforms, read once per pixel>",
                shadergen::uniformBlock(render::pathTracerUniformDeclarations(), modules));
     for (const std::string& module : modules)
@@ -96,6 +102,16 @@ std::vector<glm::vec4> ShaderSampler::draw(int mode, const SamplingCase& samplin
     glUniform1i(location("uEntering"), samplingCase.entering ? 1 : 0);
     glUniform1i(location("uEnergyCompensation"), samplingCase.energyCompensation ? 1 : 0);
 
+    std::optional<render::EnvironmentMapTextures> environment;
+    if (samplingCase.environmentMap != nullptr) {
+        environment = render::uploadEnvironmentMap(*samplingCase.environmentMap);
+        glUniform1i(location("uEnvironmentMap"), render::EnvironmentMapTextures::kRadianceUnit);
+        glUniform1i(location("uEnvironmentDistribution"),
+                    render::EnvironmentMapTextures::kDistributionUnit);
+        glUniform1f(location("uEnvironmentIntensity"), 1.0f);
+        const float angle = glm::radians(samplingCase.environmentRotationDegrees);
+        glUniform2f(location("uEnvironmentRotation"), std::cos(angle), std::sin(angle));
+    }
 
     framebuffer.bindForDrawing();
     glViewport(0, 0, width, height);

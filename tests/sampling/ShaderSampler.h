@@ -1,8 +1,9 @@
 #pragma once
-// Runs the renderer's GLSL sampling routines and pdfs (shaders/modules/sampling.glsl and
-// materials.glsl, unmodified) on the GPU through a probe shader of the test's own
+// Runs the renderer's GLSL sampling routines and pdfs (shaders/modules/sampling.glsl,
+// materials.glsl and environment.glsl, unmodified) on the GPU through a probe shader of the test's own
 // (sampling_probe.frag), so that what is tested is the code that renders.
 #include "gl/Shader.h"
+#include "render/EnvironmentMap.h"
 
 #include <glm/glm.hpp>
 
@@ -19,6 +20,7 @@ enum class SamplingRoutine {
     BlinnPhongMaterial = 3,   // blinnPhongSample / blinnPhongPdf / blinnPhongEvaluate, world
     RoughConductorMaterial = 4,   // roughConductorSample / Pdf / Evaluate, world
     RoughDielectricMaterial = 5,  // roughDielectricSample / Pdf / Evaluate, world
+    EnvironmentMap = 6,       // sampleEnvironmentMap / environmentMapPdf, world
 };
 
 struct SamplingCase {
@@ -32,6 +34,9 @@ struct SamplingCase {
     float ior = 1.5f;                      // the rough dielectric's index
     bool entering = true;                  // the rough dielectric: wo outside the medium
     bool energyCompensation = true;        // the rough conductor's
+    // The environment map's only: the map (uploaded for the draw) and its rotation about +y.
+    const render::EnvironmentMap* environmentMap = nullptr;
+    float environmentRotationDegrees = 0.0f;
 };
 
 // The directions of a pdf grid: cell (i, j) is centred on theta = (i + 1/2) thetaMax /

@@ -1,5 +1,5 @@
 // The test's own main(), appended to the renderer's modules (constants, rng, sampler,
-// sampling, scene_data, fresnel, materials): it runs the real sampling and pdf routines, one
+// sampling, scene_data, fresnel, ggx_albedo_table, microfacet, materials, environment): it runs the real sampling and pdf routines, one
 // per fragment, and writes what they returned into an RGBA32F target read back by the test.
 //
 //   uMode 0: draw one sample per fragment; rgb = the direction, a = its pdf (-1: no sample)
@@ -17,7 +17,8 @@
 //
 // Routines (uRoutine): 0 cosine hemisphere, 1 uniform cone, 2 Blinn-Phong half vector (all
 // in the local frame, +z up), 3 the Blinn-Phong material, 4 the rough conductor, 5 the rough
-// dielectric (world directions; a material's f cos takes |cos|, for transmission).
+// dielectric, 6 the environment map (world directions; a material's f cos takes |cos|, for
+// transmission).
 
 uniform int uMode;
 uniform int uRoutine;
@@ -95,6 +96,8 @@ float routinePdf(vec3 direction)
         return roughConductorPdf(probeSurface(), uOutgoing, direction);
     if (uRoutine == 5)
         return roughDielectricPdf(probeSurface(), uOutgoing, direction);
+    if (uRoutine == 6)
+        return environmentMapPdf(direction);
     return blinnPhongPdf(probeSurface(), uOutgoing, direction);
 }
 
@@ -148,6 +151,10 @@ void main()
     } else if (uRoutine == 2) {
         vec3 direction = sampleBlinnPhongHalfVector(u, uExponent);
         outValue = vec4(direction, blinnPhongHalfVectorPdf(direction.z, uExponent));
+    } else if (uRoutine == 6) {
+        EnvironmentMapSample chosen = sampleEnvironmentMap(u);
+        outValue = chosen.pdf > 0.0 ? vec4(chosen.direction, chosen.pdf)
+                                    : vec4(0.0, 0.0, 0.0, -1.0);
     } else {
         BsdfSample scattered = materialSample(uLobe, u);
         outValue = scattered.valid ? vec4(scattered.direction, scattered.pdf)

@@ -1,8 +1,9 @@
-// The tables of CSG operators, materials, pigments and environments (scene/CsgOperators.h,
-// Materials.h, Pigments.h, Environments.h), walked row by row: what the compiler cannot
+// The tables of CSG operators, materials, pigments, environments and lights
+// (scene/CsgOperators.h, Materials.h, Pigments.h, Environments.h, Lights.h), walked row by row: what the compiler cannot
 // check about a new kind (its words, its GLSL, its place in the shaders' dispatch) fails
 // here. The primitives have their own walk (PrimitiveKindsTest.cpp).
 #include "scene/KindCodes.h"
+#include "scene/Lights.h"
 #include "scene/SceneTestSupport.h"
 
 #include <gtest/gtest.h>
@@ -52,11 +53,11 @@ TEST(KindCodes, NameTheKindInCapitalsWithWordsSplit)
 TEST(KindCodes, NoShaderModuleDeclaresACodeOfItsOwn)
 {
     const std::regex copiedCode(
-        "const\\s+int\\s+(PRIMITIVE|OPCODE|CSG|MATERIAL|PIGMENT|ENVIRONMENT)_\\w+\\s*=");
+        "const\\s+int\\s+(PRIMITIVE|OPCODE|CSG|MATERIAL|PIGMENT|ENVIRONMENT|LIGHT)_\\w+\\s*=");
     for (const char* module :
-         {"csg_operators.glsl", "environment.glsl", "integrator.glsl", "lights.glsl",
-          "materials.glsl", "pigments.glsl", "ray_queries_traced.glsl", "scene_data.glsl",
-          "sdf_primitives.glsl", "shape_interpreter.glsl"})
+         {"csg_operators.glsl", "direct_lighting.glsl", "environment.glsl", "integrator.glsl",
+          "lights.glsl", "materials.glsl", "pigments.glsl", "ray_queries_traced.glsl",
+          "scene_data.glsl", "sdf_primitives.glsl", "shape_interpreter.glsl"})
         EXPECT_FALSE(std::regex_search(readModule(module), copiedCode))
             << module << " writes a kind's code as a number: it must come from the generated "
                          "#defines (shadergen/ShaderCodes.h)";
@@ -232,17 +233,21 @@ TEST(PigmentKinds, EachIsParsedFromItsKeyword)
 
 TEST(EnvironmentKinds, CodesAreTheirPlaceInTheListAndEachIsParsedFromItsWords)
 {
+    // What follows each kind's word in a file.
+    const std::map<std::string, std::string> arguments = {
+        {"none", ""}, {"sky", ""}, {"constant", " 0.5 0.5 0.5"}, {"map", " sky-sun.hdr"}};
     const auto& environments = environmentDescriptions();
     for (std::size_t i = 0; i < environments.size(); ++i) {
         const EnvironmentDescription& environment = environments[i];
         EXPECT_EQ(environment.code, static_cast<int>(i)) << environment.keyword;
         EXPECT_EQ(static_cast<std::size_t>(environment.kind), i) << environment.keyword;
+        const auto example = arguments.find(environment.keyword);
+        ASSERT_NE(example, arguments.end()) << environment.keyword << ": this test has no example";
         for (const std::string word : {environment.keyword, environment.alias}) {
             if (word.empty())
                 continue;
             EXPECT_EQ(findEnvironmentKind(word), &environment) << word;
-            const std::string written =
-                "environment " + word + (environment.hasColour ? " 0.5 0.5 0.5" : "");
+            const std::string written = "environment " + word + example->second;
             const Scene scene =
                 parse(oneObject("sphere 0 0 0 1", "solid 1 1 1", "0 0 0 0 0 0 1", written));
             EXPECT_EQ(scene.environment.kind, environment.kind) << written;
@@ -250,15 +255,101 @@ TEST(EnvironmentKinds, CodesAreTheirPlaceInTheListAndEachIsParsedFromItsWords)
     }
 }
 
-// The first environment is the fallback (no radiance); each other one has its case.
+// The first environment is the fallback (no radiance); each other one has its case, and a
+// kind with a switch has its code under it.
 TEST(EnvironmentKinds, EachButTheFallbackHasACaseInEnvironmentGlsl)
 {
     const std::string glsl = readModule("environment.glsl");
     const auto& environments = environmentDescriptions();
-    for (std::size_t i = 1; i < environments.size(); ++i)
+    EXPECT_EQ(environments.front().featureSwitch, nullptr);
+    for (std::size_t i = 1; i < environments.size(); ++i) {
         EXPECT_TRUE(uses(glsl, codeName(environments[i])))
             << environments[i].keyword << ": environment.glsl never tests "
             << codeName(environments[i]);
+        if (environments[i].featureSwitch != nullptr) {
+            EXPECT_NE(glsl.find(std::string("#if ") + environments[i].featureSwitch),
+                      std::string::npos)
+                << environments[i].keyword << ": environment.glsl never tests "
+                << environments[i].featureSwitch;
+        }
+    }
+}
+
+// --- lights -----------------------------------------------------------------------------
+
+TEST(LightKinds, CodesAreTheirPlaceInTheListAndNamesAreDistinct)
+{
+    std::set<std::string> names;
+    const auto& lights = lightDescriptions();
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+        EXPECT_EQ(lights[i].code, static_cast<int>(i)) << lights[i].name;
+        EXPECT_EQ(static_cast<std::size_t>(lights[i].kind), i) << lights[i].name;
+        EXPECT_EQ(&describe(lights[i].kind), &lights[i]) << lights[i].name;
+        EXPECT_TRUE(names.insert(lights[i].name).second) << lights[i].name << " twice";
+        EXPECT_EQ(codeName(lights[i]), codeName("LIGHT_", lights[i].identifier));
+    }
+}
+
+// Each kind is compiled in by its switch, and defines, under its prefix and with the others'
+// signatures, the functions the generated dispatchers call (render/KindDispatchers.cpp): a
+// sampler, and a density where a BSDF-sampled ray can meet it.
+TEST(LightKinds, EachDefinesItsFunctionsInLightsGlslUnderItsSwitch)
+{
+    const std::string glsl = readModule("lights.glsl");
+    for (const LightDescription& light : lightDescriptions()) {
+        ASSERT_NE(light.featureSwitch, nullptr) << light.name;
+        const std::size_t guard = glsl.find(std::string("#if ") + light.featureSwitch);
+        EXPECT_NE(guard, std::string::npos)
+            << light.name << ": lights.glsl never tests " << light.featureSwitch;
+        const std::string prefix = light.glslPrefix;
+        std::vector<std::string> signatures = {
+            "bool " + prefix +
+            "Sample(int light, vec3 p, vec2 u, float selection, out LightSample chosen)"};
+        if (light.emitter != Emitter::DeltaPosition)
+            signatures.push_back("float " + prefix + "Pdf(int light, vec3 p, vec3 direction)");
+        for (const std::string& signature : signatures) {
+            const std::size_t at = glsl.find(signature);
+            EXPECT_NE(at, std::string::npos)
+                << light.name << ": no \"" << signature << "\" in lights.glsl";
+            EXPECT_TRUE(at == std::string::npos || (guard != std::string::npos && at > guard))
+                << light.name << ": " << signature << " stands before #if " << light.featureSwitch;
+        }
+    }
+}
+
+// One scene with a light of every kind: each kind's lister gives its own lights, the list
+// runs kind by kind in table order, and each light's power follows its kind's formula.
+TEST(LightKinds, EachListsTheScenesLightsOfItsKindInTableOrder)
+{
+    const Scene scene = parse("environment map sky-sun.hdr intensity 2\n"
+                              "0 0 5\n0 0 0\n0 1 0\n45\n"
+                              "2\n1 2 3  4 4 4\n-1 2 3  1 1 1\n"
+                              "1 solid 1 1 1\n"
+                              "2\n0 0 0 0 0 0 1\n3 3 3 0 0 0 1\n"
+                              "3\n0 1 sphere 0 4 0 0.5\n0 0 sphere 0 0 0 1\n"
+                              "0 1 sphere 2 4 0 0.25\n");
+    const std::vector<Light> lights = sceneLights(scene);
+    ASSERT_EQ(lights.size(), 5u);
+    const LightKind expected[] = {LightKind::Point, LightKind::Point, LightKind::Sphere,
+                                  LightKind::Sphere, LightKind::Environment};
+    for (std::size_t i = 0; i < lights.size(); ++i)
+        EXPECT_EQ(lights[i].kind, expected[i]) << "light " << i;
+    EXPECT_EQ(lights[0].position, glm::vec3(1, 2, 3));
+    EXPECT_EQ(lights[2].object, 0);
+    EXPECT_EQ(lights[3].object, 2);
+    EXPECT_EQ(lights[3].radius, 0.25f);
+    EXPECT_EQ(lights[4].emission, glm::vec3(2.0f));
+    EXPECT_EQ(lights[4].object, -1);
+
+    constexpr double kPi = 3.14159265358979323846;
+    LightPowerContext context;
+    context.sceneRadius = 10.0;
+    context.environmentIntegral = glm::dvec3(1.0, 2.0, 3.0);
+    const std::vector<double> powers = lightPowers(lights, context);
+    EXPECT_DOUBLE_EQ(powers[0], 4.0 * kPi * 4.0);
+    EXPECT_DOUBLE_EQ(powers[2], 4.0 * kPi * kPi * 0.25 * 3.0);
+    EXPECT_DOUBLE_EQ(powers[4], kPi * 100.0 * 2.0 * 2.0)
+        << "pi R^2 times the intensity times the map's integral, channels averaged";
 }
 
 }  // namespace

@@ -93,6 +93,44 @@ TEST(SceneEnvironment, UnknownWordIsAnError)
     EXPECT_TRUE(failsAt("environment cloudy\n", 1, "cloudy", "environment radiance"));
 }
 
+TEST(SceneEnvironment, AMapIsAFileFoundAsATextureIsWithAnIntensityAndARotation)
+{
+    const Environment environment =
+        parse(withEnvironment("environment map sky-sun.hdr rotate -30 intensity 0.5")).environment;
+    EXPECT_EQ(environment.kind, EnvironmentKind::Map);
+    EXPECT_EQ(environment.mapName, "sky-sun.hdr");
+    EXPECT_EQ(environment.mapPath, FileLookup::dataDirectory() / "textures" / "sky-sun.hdr");
+    EXPECT_EQ(environment.intensity, 0.5f);
+    EXPECT_EQ(environment.rotationDegrees, -30.0f);
+    EXPECT_EQ(environment.line, 1);
+    EXPECT_TRUE(environment.importanceSampled);
+}
+
+TEST(SceneEnvironment, AMapTakesIntensityOneAndNoRotationUnlessTold)
+{
+    const Scene scene = parse(sceneWithObjects(1, "0 0 sphere 0 0 0 1\nenvironment map sky-sun.hdr\n"));
+    EXPECT_EQ(scene.environment.intensity, 1.0f);
+    EXPECT_EQ(scene.environment.rotationDegrees, 0.0f);
+}
+
+TEST(SceneEnvironment, AMissingMapFileIsAnErrorNamingTheFoldersSearched)
+{
+    EXPECT_TRUE(failsAt("\nenvironment map nowhere.exr\n", 2, "nowhere.exr",
+                        "an existing environment map file (looked in "));
+}
+
+TEST(SceneEnvironment, ANegativeMapIntensityIsAnError)
+{
+    EXPECT_TRUE(failsAt("environment map sky-sun.hdr intensity -1\n", 1, "-1",
+                        "environment map intensity"));
+}
+
+TEST(SceneEnvironment, AMapOptionGivenTwiceIsAnError)
+{
+    EXPECT_TRUE(failsAt("environment map sky-sun.hdr rotate 10 rotate 20\n", 1, "rotate",
+                        "'rotate' only once"));
+}
+
 // --- CSG blocks ---------------------------------------------------------------------------
 
 const CsgNode& csgOf(const Scene& scene)

@@ -19,8 +19,7 @@ TEST(SceneFeatures, ClassicSceneThreeUsesBlinnPhongAndAPointLight)
     EXPECT_EQ(features.materials, std::set<MaterialKind>{MaterialKind::BlinnPhong})
         << "scene 3's emissive finish is used by no object, so it adds no material";
     EXPECT_EQ(features.pigments, std::set<PigmentKind>{PigmentKind::Solid});
-    EXPECT_TRUE(features.pointLights);
-    EXPECT_FALSE(features.sphereLights);
+    EXPECT_EQ(features.lights, std::set<LightKind>{LightKind::Point});
     EXPECT_TRUE(features.userSdfs.empty());
     EXPECT_FALSE(features.transforms);
     EXPECT_EQ(features.environment, EnvironmentKind::Sky);
@@ -40,8 +39,7 @@ TEST(SceneFeatures, ClassicSceneOneUsesEveryMaterialItsFinishesNameAndASphereLig
     const SceneFeatures features = classicFeatures(1);
     EXPECT_EQ(features.materials,
               (std::set<MaterialKind>{MaterialKind::Lambertian, MaterialKind::Dielectric}));
-    EXPECT_TRUE(features.sphereLights);
-    EXPECT_FALSE(features.pointLights);
+    EXPECT_EQ(features.lights, std::set<LightKind>{LightKind::Sphere});
     EXPECT_TRUE(features.has(PigmentKind::Checker));
     EXPECT_TRUE(features.has(PigmentKind::Texture));
 }
@@ -84,8 +82,30 @@ TEST(SceneFeatures, EverythingHasEveryFeatureAndTheScenesUserSdfs)
     const SceneFeatures features = SceneFeatures::everything(scene);
     EXPECT_EQ(features.materials.size(), materialDescriptions().size());
     EXPECT_EQ(features.pigments.size(), pigmentDescriptions().size());
-    EXPECT_TRUE(features.transforms && features.pointLights && features.sphereLights);
+    EXPECT_TRUE(features.transforms);
+    EXPECT_EQ(features.lights, (std::set<LightKind>{LightKind::Point, LightKind::Sphere}))
+        << "every light kind but the environment's, whose code needs a map";
     EXPECT_EQ(features.userSdfs.count("twisted_bar"), 1u);
+}
+
+TEST(SceneFeatures, AnEnvironmentMapIsALightAndItsKind)
+{
+    const Scene scene =
+        parse("environment map sky-sun.hdr\n" + sceneWithObjects(1, "0 0 sphere 0 0 0 1\n"));
+    const SceneFeatures features = analyseFeatures(scene);
+    EXPECT_EQ(features.environment, EnvironmentKind::Map);
+    EXPECT_TRUE(features.has(EnvironmentKind::Map));
+    EXPECT_EQ(features.lights, std::set<LightKind>{LightKind::Environment});
+    EXPECT_TRUE(SceneFeatures::everything(scene).has(LightKind::Environment));
+}
+
+TEST(SceneFeatures, AMapLeftToTheEscapingRaysIsNoLight)
+{
+    Scene scene =
+        parse("environment map sky-sun.hdr\n" + sceneWithObjects(1, "0 0 sphere 0 0 0 1\n"));
+    scene.environment.importanceSampled = false;
+    EXPECT_TRUE(analyseFeatures(scene).lights.empty());
+    EXPECT_FALSE(SceneFeatures::everything(scene).has(LightKind::Environment));
 }
 
 }  // namespace

@@ -1,9 +1,10 @@
-// The shaders' dispatchers over materials and pigments, generated from the kinds' tables
+// The shaders' dispatchers over materials, pigments and lights, generated from the kinds' tables
 // (shadergen/KindDispatchers.h): every kind reached by its code, under its switch, and nothing
 // asked of a delta material that it does not have. That they compile and choose right is
 // the render tests' part (furnaces, dielectrics, the regression scenes).
 #include "shadergen/KindDispatchers.h"
 #include "scene/KindCodes.h"
+#include "scene/Lights.h"
 #include "scene/Materials.h"
 #include "scene/Pigments.h"
 
@@ -105,6 +106,47 @@ TEST(PigmentDispatcher, EveryKindButTheFallbackIsColouredByItsCodeUnderItsSwitch
                   std::string::npos)
             << pigments[i].keyword << " in\n" << color;
     EXPECT_NE(color.find("    return color;\n}"), std::string::npos) << color;
+}
+
+// Each light kind is sampled by its code under its switch, its test left out where the shader
+// has one kind only (every classic scene: the kind is then not even read).
+TEST(LightDispatchers, EveryKindIsSampledByItsCodeUnderItsSwitch)
+{
+    const std::string glsl = lightDispatchers();
+    const std::string sample = functionText(glsl, "bool lightSample(");
+    ASSERT_FALSE(sample.empty()) << glsl;
+    for (const LightDescription& light : lightDescriptions())
+        EXPECT_NE(sample.find(std::string("#if ") + light.featureSwitch +
+                              "\n    if (LIGHT_KINDS_COMPILED == 1 || kind == " +
+                              codeName(light) + ")\n        return " + light.glslPrefix +
+                              "Sample(light, p, u, selection, chosen);\n#endif\n"),
+                  std::string::npos)
+            << light.name << " in\n" << sample;
+    EXPECT_NE(sample.find("    return false;\n}"), std::string::npos) << sample;
+    std::string sum;
+    for (const LightDescription& light : lightDescriptions())
+        sum += (sum.empty() ? "" : " + ") + std::string(light.featureSwitch);
+    EXPECT_NE(glsl.find("#define LIGHT_KINDS_COMPILED (" + sum + ")\n"), std::string::npos)
+        << glsl;
+}
+
+// A BSDF-sampled ray never meets a point: lightPdf leaves the deltas out, and includes the
+// light's selection probability for every other kind.
+TEST(LightDispatchers, TheDensityLeavesOutTheDeltasAndIncludesTheSelection)
+{
+    const std::string pdf = functionText(lightDispatchers(), "float lightPdf(");
+    ASSERT_FALSE(pdf.empty());
+    for (const LightDescription& light : lightDescriptions()) {
+        const bool delta = light.emitter == Emitter::DeltaPosition;
+        EXPECT_EQ(pdf.find(light.glslPrefix + std::string("Pdf(light, p, direction)")) !=
+                      std::string::npos,
+                  !delta)
+            << light.name << " in\n" << pdf;
+        EXPECT_EQ(pdf.find(codeName(light)) != std::string::npos, !delta)
+            << light.name << " in\n" << pdf;
+    }
+    EXPECT_NE(pdf.find("    return lightSelectionProbability(light) * pdf;\n}"), std::string::npos)
+        << pdf;
 }
 
 }  // namespace

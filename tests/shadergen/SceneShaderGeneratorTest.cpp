@@ -377,9 +377,44 @@ TEST(KindCodesInTheShader, EveryKindHasItsDefineAndEverySwitchIsSet)
                     << pigment.featureSwitch;
             }
         }
-        for (const auto& environment : scene::environmentDescriptions())
+        for (const auto& environment : scene::environmentDescriptions()) {
             EXPECT_TRUE(defines(scene::codeName(environment), environment.code))
                 << scene::codeName(environment);
+            if (environment.featureSwitch != nullptr) {
+                EXPECT_NE(code.defines.find(std::string("#define ") + environment.featureSwitch),
+                          std::string::npos)
+                    << environment.featureSwitch;
+            }
+        }
+        for (const auto& light : scene::lightDescriptions()) {
+            EXPECT_TRUE(defines(scene::codeName(light), light.code)) << scene::codeName(light);
+            EXPECT_NE(code.defines.find(std::string("#define ") + light.featureSwitch),
+                      std::string::npos)
+                << light.featureSwitch;
+        }
+    }
+}
+
+// A scene without an environment map compiles none of its code: its switches are off (the
+// map's code in environment.glsl and lights.glsl stands under them: KindTablesTest).
+TEST(EnvironmentMapInTheShader, OnlyASceneWithAMapHasItsCodeAndItsLightIsTheLast)
+{
+    auto defined = [](const SceneShaderCode& code, const std::string& line) {
+        return code.defines.find("#define " + line + "\n") != std::string::npos;
+    };
+    const SceneShaderCode without = specialized("0 1 sphere 0 0 0 1", 1);
+    EXPECT_TRUE(defined(without, "HAS_ENVIRONMENT_MAP 0")) << without.defines;
+    EXPECT_TRUE(defined(without, "HAS_ENVIRONMENT_LIGHT 0")) << without.defines;
+    EXPECT_TRUE(defined(without, "ENVIRONMENT_LIGHT_INDEX -1")) << without.defines;
+    for (const ShaderVariant variant : {ShaderVariant::Specialized, ShaderVariant::General}) {
+        const SceneShaderCode with = generateSceneShaderCode(
+            parse("environment map sky-sun.hdr\n" +
+                  sceneWithObjects(2, "0 1 sphere 0 0 0 1\n0 0 sphere 3 0 0 1\n")),
+            {variant});
+        EXPECT_TRUE(defined(with, "HAS_ENVIRONMENT_MAP 1")) << with.defines;
+        EXPECT_TRUE(defined(with, "HAS_ENVIRONMENT_LIGHT 1")) << with.defines;
+        EXPECT_TRUE(defined(with, "LIGHT_COUNT 2")) << "the emissive sphere and the map";
+        EXPECT_TRUE(defined(with, "ENVIRONMENT_LIGHT_INDEX 1")) << with.defines;
     }
 }
 
