@@ -24,15 +24,7 @@ void* eglLoader(const char* name)
 
 bool displayHasExtension(EGLDisplay display, const char* name)
 {
-    const char* extensions = eglQueryString(display, EGL_EXTENSIONS);
-    if (extensions == nullptr)
-        return false;
-    const std::size_t length = std::strlen(name);
-    for (const char* at = std::strstr(extensions, name); at != nullptr;
-         at = std::strstr(at + 1, name))
-        if ((at == extensions || at[-1] == ' ') && (at[length] == ' ' || at[length] == '\0'))
-            return true;
-    return false;
+    return eglExtensionListHas(eglQueryString(display, EGL_EXTENSIONS), name);
 }
 
 EGLDisplay platformDisplay(EGLenum platform, void* nativeDisplay)

@@ -11,18 +11,6 @@ namespace platform {
 
 namespace {
 
-bool hasExtension(const char* extensions, const char* name)
-{
-    if (extensions == nullptr)
-        return false;
-    const std::size_t length = std::strlen(name);
-    for (const char* at = std::strstr(extensions, name); at != nullptr;
-         at = std::strstr(at + 1, name))
-        if ((at == extensions || at[-1] == ' ') && (at[length] == ' ' || at[length] == '\0'))
-            return true;
-    return false;
-}
-
 const char* eglErrorName(EGLint error)
 {
     switch (error) {
@@ -74,7 +62,7 @@ std::vector<EglDevice> enumerateEglDevices()
                                  "or the GPU's driver)?");
     for (const char* needed : {"EGL_EXT_device_enumeration", "EGL_EXT_device_query",
                                "EGL_EXT_platform_device"})
-        if (!hasExtension(client, needed))
+        if (!eglExtensionListHas(client, needed))
             throw std::runtime_error(std::string("libEGL lacks ") + needed);
 
     const auto queryDevices =
@@ -99,14 +87,14 @@ std::vector<EglDevice> enumerateEglDevices()
         EglDevice device;
         device.handle = handle;
         const char* extensions = queryDeviceString(handle, EGL_EXTENSIONS);
-        device.software = hasExtension(extensions, "EGL_MESA_device_software");
+        device.software = eglExtensionListHas(extensions, "EGL_MESA_device_software");
         device.gpuIndex = device.software ? -1 : gpus++;
         // A render node needs no privileges a display server holds; the primary node is
         // named where there is no render node.
         const char* node = nullptr;
-        if (hasExtension(extensions, "EGL_EXT_device_drm_render_node"))
+        if (eglExtensionListHas(extensions, "EGL_EXT_device_drm_render_node"))
             node = queryDeviceString(handle, EGL_DRM_RENDER_NODE_FILE_EXT);
-        if (node == nullptr && hasExtension(extensions, "EGL_EXT_device_drm"))
+        if (node == nullptr && eglExtensionListHas(extensions, "EGL_EXT_device_drm"))
             node = queryDeviceString(handle, EGL_DRM_DEVICE_FILE_EXT);
         if (node != nullptr)
             device.file = node;
@@ -114,6 +102,18 @@ std::vector<EglDevice> enumerateEglDevices()
         devices.push_back(device);
     }
     return devices;
+}
+
+bool eglExtensionListHas(const char* extensions, const char* name)
+{
+    if (extensions == nullptr)
+        return false;
+    const std::size_t length = std::strlen(name);
+    for (const char* at = std::strstr(extensions, name); at != nullptr;
+         at = std::strstr(at + 1, name))
+        if ((at == extensions || at[-1] == ' ') && (at[length] == ' ' || at[length] == '\0'))
+            return true;
+    return false;
 }
 
 }  // namespace platform

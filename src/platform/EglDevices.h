@@ -27,4 +27,8 @@ std::vector<EglDevice> enumerateEglDevices();
 // "EGL_BAD_MATCH (0x3009)": the EGL error last raised on this thread.
 std::string lastEglError();
 
+// True when the space-separated EGL extension list `extensions` (which may be null) names
+// `name` whole, not as the prefix of a longer name.
+bool eglExtensionListHas(const char* extensions, const char* name);
+
 }  // namespace platform
