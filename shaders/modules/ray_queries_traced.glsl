@@ -342,8 +342,9 @@ vec3 marchedTransmittance(Surface s, vec3 wi, float cosLeaving, float distance,
     float stopTolerance = min(tolerance, 0.5 * start.clearance);
     int retries = 0;
     int stepsLeft = gMaxMarchSteps;
-    float t = 0.0;
-    float acceptedT = 0.0;
+    // Before the first piece's bound the segment can approach nothing.
+    float t = min(culling.entryDistance, clearDistance);
+    float acceptedT = t;
     float acceptedRadius = 0.0;
     for (int stop = 0; stop < kMaxShadowStops && loopIterationAllowed(); ++stop) {
         float radius = shadowMarch(start.origin, wi, insideSign, culling.mask, clearDistance,
@@ -463,5 +464,5 @@ float cameraMarchStart(ivec2 pixel)
 #endif
     RayCulling culling = sceneRayCulling(gCameraEye, axis, tolerance0, growth);
     float limit = min(gFarDistance, culling.escapeDistance);
-    return coneClearance(gCameraEye, axis, tolerance0, growth, culling.mask, limit);
+    return coneClearance(gCameraEye, axis, tolerance0, growth, culling, limit);
 }
