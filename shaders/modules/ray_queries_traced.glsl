@@ -87,13 +87,15 @@ SurfaceHit marchedSurface(MarchHit hit, vec3 p, bool onSurface, vec3 origin, vec
     surface.footprint = coneFootprint(cone, hit.t);
     surface.tolerance = hitTolerance(cone, hit.t);
     int object = hit.object;
+#if HAS_MARCHED_UNION
     if (onSurface) {
         // Where two objects come within the tolerance of each other (a contact), the
         // march's nearest object at the stop may be the other one. (Only marched objects:
-        // the march met none of those met exactly.)
+        // the march met none of those met exactly; with one marched surface it is that one.)
         sceneDistanceAndObjectCulled(p, 0xffffffffu, object);
         COUNT_WORK(workEvaluations, 1);
     }
+#endif
     // On the surface, with the on-surface step; off it, or on a surface of zero thickness,
     // at the march's stop, which lies on the side the ray came from.
     vec3 normal = sceneNormal(p, kOnSurfaceNormalStep * surface.tolerance, onSurface,
