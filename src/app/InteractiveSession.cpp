@@ -38,11 +38,6 @@ double secondsBetween(std::chrono::steady_clock::time_point from,
     return std::chrono::duration<double>(to - from).count();
 }
 
-float sceneRadius(const scene::Scene& scene)
-{
-    return scene::computeSceneBounds(scene).radius;
-}
-
 // A message on one line, for the title.
 std::string oneLine(const std::string& text)
 {
@@ -66,7 +61,7 @@ InteractiveSession::InteractiveSession(platform::GlfwWindowContext& window,
       line_(line),
       interrupt_(interrupt),
       fileScene_(scene),
-      camera_(scene.camera, sceneRadius(scene)),
+      camera_(scene.camera, scene),
       panel_(window.glfwWindow())
 {
     watcher_.watch(filesOfScene(line.scene, scene));
@@ -300,7 +295,7 @@ bool InteractiveSession::reloadChangedFiles()
         std::string editedSha256 = app::sceneSha256(filesOfScene(line_.scene, edited));
         const Clock::time_point loaded = Clock::now();
         interaction::CameraController camera = camera_;
-        camera.setHome(edited.camera, sceneRadius(edited),
+        camera.setHome(edited.camera, edited,
                        render::cameraLinesChanged(fileScene_.camera, edited.camera));
         scene::Scene shown = edited;
         shown.camera = camera.camera();
