@@ -7,6 +7,8 @@
 #include "scene/FileLookup.h"
 #include "scene/SceneBounds.h"
 #include "scene/SceneParser.h"
+
+#include <glm/glm.hpp>
 #include "support/ChildProcess.h"
 #include "window/WindowDriver.h"
 
@@ -17,6 +19,7 @@
 #include <future>
 #include <iostream>
 #include <iterator>
+#include <optional>
 #include <sstream>
 #include <thread>
 #include <unistd.h>
@@ -193,6 +196,34 @@ protected:
             return result;
         }
         return program_.get();
+    }
+
+    static fs::path scene1Path()
+    {
+        return fs::path(RAYTRACER_SOURCE_DIR) / "scenes" / "scene1.in";
+    }
+
+    static scene::Scene readScene1()
+    {
+        return scene::parseSceneFile(scene1Path());
+    }
+
+    // Presses C and reads back the camera it writes to scene.camera (scene1's objects after
+    // it); none, with a failure, where the window does not say it wrote it.
+    std::optional<scene::Camera> writtenCamera()
+    {
+        pressKey(window_, "c");
+        const std::string written = waitForTitleWith("camera line");
+        if (written.find("scene.camera") == std::string::npos) {
+            ADD_FAILURE() << "C must write the camera to scene.camera: " << written;
+            return std::nullopt;
+        }
+        const std::string scene1Text = readText(scene1Path());
+        // scene1's text after its camera (its field of view, 35, ends it).
+        return scene::parseSceneText(readText(folder_ / "scene.camera") + "\n" +
+                                         scene1Text.substr(scene1Text.find("35\n") + 3),
+                                     "written.in", scene::FileLookup::forScene(scene1Path()))
+            .camera;
     }
 
     bool running() const
@@ -406,10 +437,7 @@ float depthInWalls(const scene::Scene& scene, const glm::vec3& point)
 // back), and the picture about as bright.
 TEST_F(InteractiveWindow, AQuarterTurnOrbitInScene1KeepsThePicture)
 {
-    const fs::path scene1Path = fs::path(RAYTRACER_SOURCE_DIR) / "scenes" / "scene1.in";
-    std::ifstream scene1(scene1Path);
-    ASSERT_TRUE(scene1) << "cannot read " << scene1Path;
-    writeScene(std::string(std::istreambuf_iterator<char>(scene1), {}));
+    writeScene(readText(scene1Path()));
     start();
     ASSERT_GE(samplesInTitle(waitForSamples(4, 40.0)), 4) << windowTitle(window_);
     const ChannelMeans before = meanColour(captureWindow(window_));
@@ -430,23 +458,15 @@ TEST_F(InteractiveWindow, AQuarterTurnOrbitInScene1KeepsThePicture)
     EXPECT_LT(brightnessAfter, 2.0 * brightnessBefore)
         << "the picture's mean rose from " << brightnessBefore << " to " << brightnessAfter;
 
-    pressKey(window_, "c");
-    const std::string written = waitForTitleWith("camera line");
-    ASSERT_NE(written.find("scene.camera"), std::string::npos)
-        << "C must write the camera: " << written;
-    std::ifstream cameraFile(folder_ / "scene.camera");
-    const std::string cameraText(std::istreambuf_iterator<char>(cameraFile), {});
-    // The scene with the camera the window had: its eye must be in the room.
-    std::string scene1Text = readText(scene1Path);
-    const scene::Scene original =
-        scene::parseSceneText(scene1Text, "scene1.in", scene::FileLookup::forScene(scene1Path));
-    const scene::Scene orbited = scene::parseSceneText(
-        cameraText + "\n" + scene1Text.substr(scene1Text.find("35\n") + 3), "orbited.in",
-        scene::FileLookup::forScene(scene1Path));
-    EXPECT_EQ(depthInWalls(original, orbited.camera.eye), 0.0f)
+    const std::optional<scene::Camera> camera = writtenCamera();
+    ASSERT_TRUE(camera.has_value());
+    const std::string cameraText = readText(folder_ / "scene.camera");
+    // Its eye must be in the room.
+    const scene::Scene original = readScene1();
+    EXPECT_EQ(depthInWalls(original, camera->eye), 0.0f)
         << "the eye went into a wall: " << cameraText;
     const scene::SceneBounds bounds = scene::computeSceneBounds(original);
-    EXPECT_LE(glm::length(orbited.camera.eye - bounds.center), bounds.radius)
+    EXPECT_LE(glm::length(camera->eye - bounds.center), bounds.radius)
         << "the eye left the scene: " << cameraText;
 
     // The summary gives the accumulation on screen (restarted by the drag) and, apart, the
@@ -460,6 +480,37 @@ TEST_F(InteractiveWindow, AQuarterTurnOrbitInScene1KeepsThePicture)
     const double windowSeconds = std::stod(out.substr(open + 12));
     EXPECT_LT(accumulationSeconds, windowSeconds - 0.1)
         << "the accumulation restarted after the drag, 0.15 s after it at the earliest: " << out;
+}
+
+// Ten wheel steps towards the view's centre in scene1: the eye comes near the front sphere
+// under it (the pivot) and never passes it; the look-at point, behind the back wall, is not
+// what it dollies towards.
+TEST_F(InteractiveWindow, TenWheelStepsInScene1NeverPassThePivot)
+{
+    writeScene(readText(scene1Path()));
+    start();
+    ASSERT_GE(samplesInTitle(waitForSamples(2, 40.0)), 2) << windowTitle(window_);
+    for (int step = 0; step < 10; ++step) {
+        xdotool({"mousemove", "--window", std::to_string(window_), "80", "60"});
+        xdotool({"click", "--window", std::to_string(window_), "4"});
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    const std::optional<scene::Camera> camera = writtenCamera();
+    ASSERT_TRUE(camera.has_value());
+    // Where the file's view centre meets the front sphere (centre (1 0 1), radius 1).
+    const scene::Camera home = readScene1().camera;
+    const glm::vec3 forward = glm::normalize(home.target - home.eye);
+    const glm::vec3 offset = home.eye - glm::vec3(1.0f, 0.0f, 1.0f);
+    const float b = glm::dot(offset, forward);
+    const glm::vec3 pivot =
+        home.eye + (-b - std::sqrt(b * b - glm::dot(offset, offset) + 1.0f)) * forward;
+    const float startDistance = glm::length(pivot - home.eye);
+    const float left = glm::dot(pivot - camera->eye, forward);
+    EXPECT_GT(left, 0.0f) << "the eye passed the front sphere's surface by " << -left;
+    EXPECT_LT(left, 0.5f * startDistance) << "ten steps should have come much nearer";
+    EXPECT_GT(glm::length(camera->eye - glm::vec3(1.0f, 0.0f, 1.0f)), 1.0f)
+        << "the eye is in the front sphere";
 }
 
 // C writes the camera as a scene file's camera line, to the terminal and to scene.camera.
