@@ -137,6 +137,8 @@ private:
     void uploadAll();
     void setDrawUniforms(int samplesPerFrame, int sampleTarget, int tileSize);
     void bindEnvironmentTextures() const;
+    // The accumulation the next draw reads, on its units.
+    void bindPrevious(const AccumulationTargets::Set& source) const;
     void generateDriverCode();
     void restartAccumulation();
     bool drawFrame(const std::function<bool()>& keepGoing, int samples, int target);
