@@ -470,8 +470,26 @@ void ProgressiveRenderer::displayToWindow(int windowWidth, int windowHeight) con
         shownWidth = coarseSide(width(), previewDivisor_);
         shownHeight = coarseSide(height(), previewDivisor_);
     }
-    toneMapper_.draw(targets_.previous().estimate, shownWidth, shownHeight, windowWidth,
-                     windowHeight, triangle_, exposure_);
+    const bool denoised = previewDenoising_ && canPreviewDenoise() && !showsPreview();
+    toneMapper_.draw(denoised ? previewDenoised() : targets_.previous().estimate, shownWidth,
+                     shownHeight, windowWidth, windowHeight, triangle_, exposure_);
+}
+
+const gl::Texture& ProgressiveRenderer::previewDenoised() const
+{
+    if (!previewDenoiser_)
+        previewDenoiser_ = std::make_unique<PreviewDenoiser>(defaultShaderDirectory());
+    const gl::Texture& filtered =
+        previewDenoiser_->filter(targets_.previous(), width(), height(), triangle_);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return filtered;
+}
+
+io::Image ProgressiveRenderer::previewDenoisedRadiance() const
+{
+    if (!canPreviewDenoise())
+        throw std::logic_error("the preview denoiser needs feature buffers");
+    return readTarget(previewDenoised(), 3);
 }
 
 }  // namespace render

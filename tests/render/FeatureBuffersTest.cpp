@@ -284,5 +284,29 @@ TEST(FeatureBuffers, OpenImageDenoiseBringsANoisyRenderNearerTheConvergedOne)
                                 << " denoised (" << film::denoiserLibrary() << ")";
 }
 
+// The window's à-trous filter (render/PreviewDenoiser.h): nearer the converged image than the
+// noisy one it filters, and never in what is written (toneMapped).
+TEST(PreviewDenoiser, BringsANoisyRenderNearerTheConvergedOneAndStaysOutOfTheFiles)
+{
+    const scene::Scene scene = loadScene(sourceDirectory() / "scenes" / "scene3.in");
+    render::ProgressiveRenderer renderer(scene, 64, 48, withFeatures(1));
+    for (int frame = 0; frame < 4; ++frame)
+        renderer.renderFrame({}, 1);
+    renderer.completeSamples();
+    const io::Image picture = renderer.toneMapped();
+    renderer.setPreviewDenoising(true);
+    const io::Image filtered = renderer.previewDenoisedRadiance();
+    EXPECT_EQ(renderer.toneMapped().pixels, picture.pixels) << "display only";
+    const RenderedImage converged = renderScene(scene, 64, 48, 256, settingsWithSeed(2));
+    const double raw = relativeRmse(renderer.radiance(), converged.radiance);
+    const double after = relativeRmse(filtered, converged.radiance);
+    std::printf("preview denoiser: relative RMSE %.3f raw, %.3f filtered\n", raw, after);
+    EXPECT_LT(after, 0.7 * raw);
+
+    render::ProgressiveRenderer withoutFeatures(scene, 16, 12, settingsWithSeed(1));
+    EXPECT_FALSE(withoutFeatures.canPreviewDenoise());
+    EXPECT_THROW(withoutFeatures.previewDenoisedRadiance(), std::logic_error);
+}
+
 }  // namespace
 }  // namespace render_tests
