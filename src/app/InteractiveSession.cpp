@@ -241,6 +241,10 @@ bool InteractiveSession::answerInput(const platform::WindowInput& input, double 
                 camera_.returnHome();
             else if (press.key == platform::Key::S && press.control)
                 save();
+            else if (press.key == platform::Key::N) {
+                panelSettings_.previewDenoiser = !panelSettings_.previewDenoiser;
+                renderer_.setPreviewDenoising(panelSettings_.previewDenoiser);
+            }
         }
         // Ctrl makes a key a command (Ctrl+S), not a flight.
         if (!input.controlHeld) {
@@ -260,6 +264,7 @@ bool InteractiveSession::applyPanelSettings(const interaction::PanelSettings& tu
     if (tuned == panelSettings_)
         return false;
     renderer_.setExposure(tuned.exposure);
+    renderer_.setPreviewDenoising(tuned.previewDenoiser);
     const bool viewChanged = tuned.hitTolerance != panelSettings_.hitTolerance ||
                              tuned.maxBounces != panelSettings_.maxBounces ||
                              tuned.environment != panelSettings_.environment;

@@ -228,6 +228,9 @@ RenderSetup prepareRender(CommandLine& line)
     settings::RenderSettings settings = line.settings;
     // The window's panel switches the environment off without a recompile.
     settings.switchableEnvironment = setup.context->hasWindow();
+    // The window's preview denoiser is guided by the feature buffers.
+    if (setup.context->hasWindow())
+        settings.featureBuffers = true;
     setup.renderer = std::make_unique<render::ProgressiveRenderer>(setup.scene, line.width,
                                                                    line.height, settings);
     // A window samples every pixel alike (InteractiveSession).

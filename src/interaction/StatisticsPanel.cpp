@@ -11,13 +11,15 @@ namespace interaction {
 
 const char* const StatisticsPanel::kHelp =
     "left drag: orbit   right/middle drag: pan   wheel: dolly   W A S D Q E: fly "
-    "(Shift: faster)   R: the file's camera   Ctrl+S: save PNG + EXR   Tab: this panel   "
+    "(Shift: faster)   R: the file's camera   N: preview denoiser   Ctrl+S: save PNG + EXR   "
+    "Tab: this panel   "
     "Esc: quit";
 
 bool PanelSettings::operator==(const PanelSettings& other) const
 {
     return exposure == other.exposure && hitTolerance == other.hitTolerance &&
-           maxBounces == other.maxBounces && environment == other.environment;
+           maxBounces == other.maxBounces && environment == other.environment &&
+           previewDenoiser == other.previewDenoiser;
 }
 
 namespace {
@@ -113,6 +115,7 @@ PanelSettings StatisticsPanel::draw(const PanelReadings& readings, const PanelSe
         ImGui::SliderInt("max bounces", &tuned.maxBounces, 0, 64);
         ImGui::PopItemWidth();
         ImGui::Checkbox("environment light", &tuned.environment);
+        ImGui::Checkbox("preview denoiser (N)", &tuned.previewDenoiser);
 
         if (!readings.status.empty()) {
             ImGui::Separator();
