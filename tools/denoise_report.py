@@ -282,9 +282,12 @@ def splice(markdown, text):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("scenes", nargs="*", default=[
-        f"scenes/{s}.in" for s in ("scene1", "scene2", "scene3", "scene4", "scene5", "scene7",
-                                   "fig06-triplanar-textures", "fig07-glass-textures-lights",
-                                   "fig11-torus-knot", "fig13-glass-mirror-cornell")])
+        f"scenes/{s}.in" for s in (
+            "scene1", "scene2", "scene3", "scene4", "scene5", "scene7",
+            "fig02-materials-cornell", "fig03-shadows-point-light", "fig03-shadows-sphere-light",
+            "fig04-csg-solid", "fig06-triplanar-textures", "fig07-glass-textures-lights",
+            "fig09-glass-mirrors-checker", "fig10-many-objects-glossy-floor", "fig11-torus-knot",
+            "fig12-csg-diffuse", "fig13-glass-mirror-cornell", "fig14-smooth-csg-cornell")])
     parser.add_argument("--raytracer", default=os.path.join(ROOT, "build", "raytracer"))
     parser.add_argument("--size", type=int, nargs=2, default=[160, 120])
     parser.add_argument("--spp", type=int, nargs="+", default=[4, 16, 64, 256])
