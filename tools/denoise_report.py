@@ -296,9 +296,10 @@ def main():
     parser.add_argument("--markdown", default=os.path.join(ROOT, "docs", "ACCURACY.md"))
     parser.add_argument("--images", default=os.path.join(ROOT, "docs", "accuracy", "denoising"))
     parser.add_argument("--error-images", nargs="*",
-                        default=["scene1", "fig06-triplanar-textures",
-                                 "fig07-glass-textures-lights", "fig11-torus-knot",
-                                 "fig13-glass-mirror-cornell", "scene7"],
+                        default=["scene1", "scene7", "fig03-shadows-sphere-light",
+                                 "fig06-triplanar-textures", "fig07-glass-textures-lights",
+                                 "fig10-many-objects-glossy-floor", "fig11-torus-knot",
+                                 "fig13-glass-mirror-cornell"],
                         help="scenes whose 16-spp error image the page shows")
     parser.add_argument("--gallery", default="scene1", help="scene of docs/denoising-*.png")
     parser.add_argument("--timing-sizes", default="800x600,1920x1080")
