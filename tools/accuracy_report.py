@@ -942,7 +942,8 @@ def keep_other_tools_sections(out, markdown):
     """The summary at the top (by hand), the per-pixel sections (tools/per_pixel_report.py), the target-error section
     (bench/target_error.py), the environment maps' (bench/environment_sampling.cpp,
     bench/mitsuba/compare_environment_maps.py) and the denoising section
-    (tools/denoise_report.py) are written by other tools or by hand: they are kept from the page as it was,
+    (tools/denoise_report.py) are written by other tools or by hand: they are kept from the
+    page as it was,
     in their order, before the convergence section. The per-pixel sections' hand-written
     reading, when there is one, ends at its own marker."""
     if os.path.exists(markdown):

@@ -69,7 +69,7 @@ std::string installHint()
 }
 
 template <typename Function>
-void bind(void* library, const char* name, Function& function, const std::string& path)
+void bindEntryPoint(void* library, const char* name, Function& function, const std::string& path)
 {
     function = reinterpret_cast<Function>(dlsym(library, name));
     if (function == nullptr)
@@ -93,16 +93,17 @@ const OidnApi& api()
             }
             try {
                 const std::string path = candidate.string();
-                bind(library, "oidnNewDevice", loaded.newDevice, path);
-                bind(library, "oidnCommitDevice", loaded.commitDevice, path);
-                bind(library, "oidnGetDeviceError", loaded.getDeviceError, path);
-                bind(library, "oidnReleaseDevice", loaded.releaseDevice, path);
-                bind(library, "oidnNewFilter", loaded.newFilter, path);
-                bind(library, "oidnSetSharedFilterImage", loaded.setSharedFilterImage, path);
-                bind(library, "oidnSetFilterBool", loaded.setFilterBool, path);
-                bind(library, "oidnCommitFilter", loaded.commitFilter, path);
-                bind(library, "oidnExecuteFilter", loaded.executeFilter, path);
-                bind(library, "oidnReleaseFilter", loaded.releaseFilter, path);
+                bindEntryPoint(library, "oidnNewDevice", loaded.newDevice, path);
+                bindEntryPoint(library, "oidnCommitDevice", loaded.commitDevice, path);
+                bindEntryPoint(library, "oidnGetDeviceError", loaded.getDeviceError, path);
+                bindEntryPoint(library, "oidnReleaseDevice", loaded.releaseDevice, path);
+                bindEntryPoint(library, "oidnNewFilter", loaded.newFilter, path);
+                bindEntryPoint(library, "oidnSetSharedFilterImage", loaded.setSharedFilterImage,
+                               path);
+                bindEntryPoint(library, "oidnSetFilterBool", loaded.setFilterBool, path);
+                bindEntryPoint(library, "oidnCommitFilter", loaded.commitFilter, path);
+                bindEntryPoint(library, "oidnExecuteFilter", loaded.executeFilter, path);
+                bindEntryPoint(library, "oidnReleaseFilter", loaded.releaseFilter, path);
                 loaded.path = path;
                 return;
             } catch (const DenoiserUnavailable& error) {

@@ -111,7 +111,9 @@ TEST(FeatureBuffers, NormalsOfASphereAreTheClosedForm)
     int offSphere = 0;
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
-            const auto hits = [&](const glm::dvec3& d) { return sphereDistance(eye, d).has_value(); };
+            const auto hits = [&](const glm::dvec3& d) {
+                return sphereDistance(eye, d).has_value();
+            };
             const auto misses = [&](const glm::dvec3& d) { return !hits(d); };
             if (camera.wholePixel(x, y, misses)) {
                 ++offSphere;
