@@ -940,8 +940,10 @@ def regenerating_section():
 
 def keep_other_tools_sections(out, markdown):
     """The summary at the top (by hand), the per-pixel sections (tools/per_pixel_report.py), the target-error section
-    (bench/target_error.py) and the environment maps' (bench/environment_sampling.cpp,
-    bench/mitsuba/compare_environment_maps.py) are written by other tools or by hand: they are kept from the page as it was,
+    (bench/target_error.py), the environment maps' (bench/environment_sampling.cpp,
+    bench/mitsuba/compare_environment_maps.py) and the denoising section
+    (tools/denoise_report.py) are written by other tools or by hand: they are kept from the
+    page as it was,
     in their order, before the convergence section. The per-pixel sections' hand-written
     reading, when there is one, ends at its own marker."""
     if os.path.exists(markdown):
@@ -951,7 +953,8 @@ def keep_other_tools_sections(out, markdown):
                            ("<!-- per-pixel:begin -->", "<!-- per-pixel:end -->"),
                            ("<!-- target-error:begin -->", "<!-- target-error:end -->"),
                            ("<!-- environment-maps:begin -->",
-                            "<!-- environment-maps:end -->")):
+                            "<!-- environment-maps:end -->"),
+                           ("<!-- denoising:begin -->", "<!-- denoising:end -->")):
             if begin in previous and end in previous and not any(begin in k for k in kept):
                 kept.append(previous[previous.index(begin):previous.index(end) + len(end)] + "\n")
         at = next((i for i, line in enumerate(out) if line.startswith("## Convergence")),

@@ -26,7 +26,7 @@ if [ "$program_only" = 0 ]; then
     parallel slurm-wlm munge
     libgtest-dev
     xvfb xauth xdotool
-    python3 python3-numpy
+    python3 python3-numpy python3-venv
   )
 fi
 packages+=("$@")
@@ -38,21 +38,40 @@ for package in "${packages[@]}"; do
   fi
 done
 
-if [ ${#missing[@]} -eq 0 ]; then
-  exit 0
-fi
+install_missing_packages() {
+  if [ ${#missing[@]} -eq 0 ]; then
+    return 0
+  fi
+  run_as_root=()
+  if [ "$(id -u)" -ne 0 ]; then
+    if command -v sudo >/dev/null 2>&1; then
+      run_as_root=(sudo)
+    else
+      echo "install-dependencies: need root (or sudo) to install: ${missing[*]}" >&2
+      exit 1
+    fi
+  fi
+  echo "install-dependencies: installing ${missing[*]}" >&2
+  export DEBIAN_FRONTEND=noninteractive
+  "${run_as_root[@]}" apt-get update -qq
+  "${run_as_root[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+}
+install_missing_packages
 
-run_as_root=()
-if [ "$(id -u)" -ne 0 ]; then
-  if command -v sudo >/dev/null 2>&1; then
-    run_as_root=(sudo)
+# Open Image Denoise, for --denoise and `raytracer denoise` (docs/DENOISING.md): Debian does
+# not package it, so the pyoidn wheel (which bundles libOpenImageDenoise.so.2) goes into a
+# virtual environment of its own, where the program looks for it, never into the system's
+# Python; flip-evaluator beside it for tools/denoise-report.py. Optional: without it
+# everything but denoising works, and the tests that need it are skipped.
+oidn_venv="${RAYTRACER_OIDN_VENV:-$HOME/.local/share/raytracer/oidn-venv}"
+if [ "$program_only" = 0 ] && ! ls "$oidn_venv"/lib/python3*/site-packages/pyoidn/*/libOpenImageDenoise.so.2 \
+     "$oidn_venv"/lib/python3*/site-packages/pyoidn/libOpenImageDenoise.so.2 >/dev/null 2>&1 \
+   || ! "$oidn_venv/bin/python" -c "import flip_evaluator" >/dev/null 2>&1; then
+  if python3 -m venv "$oidn_venv" >/dev/null 2>&1 &&
+     "$oidn_venv/bin/pip" install -q --disable-pip-version-check pyoidn flip-evaluator >&2; then
+    echo "install-dependencies: Open Image Denoise installed in $oidn_venv" >&2
   else
-    echo "install-dependencies: need root (or sudo) to install: ${missing[*]}" >&2
-    exit 1
+    echo "install-dependencies: warning: could not install Open Image Denoise (pip install" \
+         "pyoidn into $oidn_venv); --denoise will not work and its tests will be skipped" >&2
   fi
 fi
-
-echo "install-dependencies: installing ${missing[*]}" >&2
-export DEBIAN_FRONTEND=noninteractive
-"${run_as_root[@]}" apt-get update -qq
-"${run_as_root[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

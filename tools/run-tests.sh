@@ -18,6 +18,10 @@ if ! command -v Xvfb >/dev/null 2>&1; then
 elif ! command -v xdotool >/dev/null 2>&1; then
     echo "run-tests: xdotool is not installed (Debian package xdotool): the interactive window tests will be reported as skipped"
 fi
+if ! ls "${RAYTRACER_OIDN_VENV:-$HOME/.local/share/raytracer/oidn-venv}"/lib/python3*/site-packages/pyoidn/oidn/lib/libOpenImageDenoise.so.2 >/dev/null 2>&1 \
+   && [ -z "${RAYTRACER_OIDN_LIBRARY:-}" ]; then
+    echo "run-tests: Open Image Denoise is not installed (see install-dependencies' warning): the tests that denoise will be skipped"
+fi
 ctest --output-on-failure --parallel 2 "$@"
 
 if [ "${RAYTRACER_SKIP_SANITIZER:-0}" != 1 ]; then

@@ -9,6 +9,10 @@ layout(local_size_x = COMPUTE_GROUP_WIDTH, local_size_y = COMPUTE_GROUP_HEIGHT) 
 
 layout(rgba32f, binding = 0) uniform writeonly image2D uNextEstimate;
 layout(rgba32f, binding = 1) uniform writeonly image2D uNextMoments;
+#if FEATURE_BUFFERS
+layout(rgba32f, binding = 2) uniform writeonly image2D uNextAlbedoDepth;
+layout(rgba32f, binding = 3) uniform writeonly image2D uNextNormalCoverage;
+#endif
 // x, y: the rectangle's lower-left pixel; z, w: its width and height.
 uniform ivec4 uRegion;
 
@@ -25,4 +29,8 @@ void main()
     accumulatePaths(pixel, estimate, moments);
     imageStore(uNextEstimate, pixel, estimate);
     imageStore(uNextMoments, pixel, moments);
+#if FEATURE_BUFFERS
+    imageStore(uNextAlbedoDepth, pixel, accumulatedAlbedoDepth);
+    imageStore(uNextNormalCoverage, pixel, accumulatedNormalCoverage);
+#endif
 }

@@ -4,6 +4,10 @@
 
 layout(location = 0) out vec4 outEstimate;
 layout(location = 1) out vec4 outMoments;
+#if FEATURE_BUFFERS
+layout(location = 2) out vec4 outAlbedoDepth;
+layout(location = 3) out vec4 outNormalCoverage;
+#endif
 
 void main()
 {
@@ -16,4 +20,8 @@ void main()
     accumulatePaths(pixel, estimate, moments);
     outEstimate = estimate;
     outMoments = moments;
+#if FEATURE_BUFFERS
+    outAlbedoDepth = accumulatedAlbedoDepth;
+    outNormalCoverage = accumulatedNormalCoverage;
+#endif
 }

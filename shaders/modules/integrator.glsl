@@ -59,6 +59,19 @@ struct PathState {
     int scattering;
     int nullCrossings;
     float marchStart;  // how far along the ray its search may begin (see cameraMarchStart)
+#if FEATURE_BUFFERS
+    // What the camera path met first (path_tracer_main.glsl accumulates it): the albedo and
+    // normal of the first surface that is not a perfect mirror or glass, tinted by those
+    // passed through (as Open Image Denoise asks); where the path escapes first, the
+    // environment's radiance clamped to 1 and no normal. featureDepth: the camera ray's
+    // distance to what it hit, -1 until then or where it hit nothing.
+    vec3 featureAlbedo;
+    vec3 featureNormal;
+    vec3 featureTint;
+    float featureDepth;
+    bool featuresFound;
+    bool cameraSegment;
+#endif
 };
 
 // The most segments (traced rays) one path can take.
@@ -84,6 +97,14 @@ PathState startPath(vec2 filmPoint, int cameraContaining, float cameraClear)
     path.scattering = 0;
     path.nullCrossings = 0;
     path.marchStart = cameraClear;
+#if FEATURE_BUFFERS
+    path.featureAlbedo = vec3(0.0);
+    path.featureNormal = vec3(0.0);
+    path.featureTint = vec3(1.0);
+    path.featureDepth = -1.0;
+    path.featuresFound = false;
+    path.cameraSegment = true;
+#endif
     return path;
 }
 
@@ -97,6 +118,16 @@ bool continuePath(inout PathState path)
 #endif
     SurfaceHit hit = findSurface(path.origin, path.direction, path.insideSign, path.cone,
                                  path.marchStart, path.containing);
+#if FEATURE_BUFFERS
+    bool cameraSegment = path.cameraSegment;
+    path.cameraSegment = false;
+    if (!hit.found && !path.featuresFound) {
+        path.featureAlbedo = path.featureTint * min(environmentRadiance(path.direction), vec3(1.0));
+        path.featuresFound = true;
+    }
+    if (hit.found && cameraSegment)
+        path.featureDepth = distance(hit.position, path.origin);
+#endif
     if (!hit.found) {
         float weight = 1.0;
 #if HAS_ENVIRONMENT_LIGHT
@@ -129,6 +160,17 @@ bool continuePath(inout PathState path)
     const float uPattern = 0.0;
 #endif
     Surface s = surfaceAt(hit.object, p, hit.normal, wo, insideSign, footprint, uPattern);
+#if FEATURE_BUFFERS
+    if (!path.featuresFound) {
+        if (isDeltaMaterial(s.material) || isNullInterface(hit.object)) {
+            path.featureTint *= s.color;
+        } else {
+            path.featureAlbedo = path.featureTint * s.color;
+            path.featureNormal = s.normal;
+            path.featuresFound = true;
+        }
+    }
+#endif
 
 #if HAS_SPHERE_LIGHTS
     // Emission, seen from outside the sphere, only along rays that truly meet it: the march

@@ -21,6 +21,29 @@ uniform int uSampleTarget;  // samples (kept and discarded) a pixel stops at; 0:
 uniform sampler2D uTileSampleTargets;
 uniform int uTileSize;
 
+#if FEATURE_BUFFERS
+// Feature buffers (film/Accumulation.h), means over the samples kept like the estimate's:
+//   albedoDepth     rgb: first-hit albedo, a: camera distance (mean over the samples that hit)
+//   normalCoverage  rgb: first-hit normal, a: fraction of the samples that hit
+uniform sampler2D uPreviousAlbedoDepth;
+uniform sampler2D uPreviousNormalCoverage;
+vec4 accumulatedAlbedoDepth;
+vec4 accumulatedNormalCoverage;
+
+// Folds a kept sample's features in; `count`: the samples kept, this one included.
+void accumulateFeatures(PathState path, float count)
+{
+    accumulatedAlbedoDepth.rgb += (path.featureAlbedo - accumulatedAlbedoDepth.rgb) / count;
+    accumulatedNormalCoverage.rgb += (path.featureNormal - accumulatedNormalCoverage.rgb) / count;
+    float hit = path.featureDepth >= 0.0 ? 1.0 : 0.0;
+    accumulatedNormalCoverage.a += (hit - accumulatedNormalCoverage.a) / count;
+    if (hit > 0.0) {
+        float hits = max(1.0, floor(accumulatedNormalCoverage.a * count + 0.5));
+        accumulatedAlbedoDepth.a += (path.featureDepth - accumulatedAlbedoDepth.a) / hits;
+    }
+}
+#endif
+
 bool isValidSample(vec3 value)
 {
     return !any(isnan(value)) && !any(isinf(value)) && all(greaterThanEqual(value, vec3(0.0)));
@@ -31,6 +54,10 @@ void readPreviousAccumulation(ivec2 pixel, out vec4 estimate, out vec4 moments)
 {
     estimate = texelFetch(uPreviousEstimate, pixel, 0);
     moments = texelFetch(uPreviousMoments, pixel, 0);
+#if FEATURE_BUFFERS
+    accumulatedAlbedoDepth = texelFetch(uPreviousAlbedoDepth, pixel, 0);
+    accumulatedNormalCoverage = texelFetch(uPreviousNormalCoverage, pixel, 0);
+#endif
 }
 
 // Adds this frame's paths of `pixel` to its estimate and moments.
@@ -86,6 +113,9 @@ void accumulatePaths(ivec2 pixel, inout vec4 estimate, inout vec4 moments)
             estimate.rgb += deviation / count;
             moments.rgb += deviation * (value - estimate.rgb);
             estimate.a = count;
+#if FEATURE_BUFFERS
+            accumulateFeatures(path, count);
+#endif
         } else {
             moments.a += 1.0;
         }

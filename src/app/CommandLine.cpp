@@ -268,6 +268,23 @@ CommandLine parseInfo(int argc, const char* const argv[])
     return line;
 }
 
+// raytracer denoise IN.exr OUT
+CommandLine parseDenoise(int argc, const char* const argv[])
+{
+    std::vector<std::string> positional;
+    CommandLine line = parseSubcommand(argc, argv, Action::Denoise, infoEntries(), positional);
+    if (line.action == Action::Help)
+        return line;
+    if (positional.size() != 2)
+        throw UsageError("denoise takes an input and an output: raytracer denoise IN.exr OUT");
+    line.denoising.input = positional[0];
+    line.denoising.output = positional[1];
+    if (io::lowerCaseExtension(line.denoising.input) != ".exr")
+        throw UsageError("denoise reads an .exr this program wrote with feature buffers, not '" +
+                         line.denoising.input.string() + "'");
+    return line;
+}
+
 // raytracer merge OUT.exr IN.exr... [--png FILE] [--stats-output FILE]
 CommandLine parseMerge(int argc, const char* const argv[])
 {
@@ -320,11 +337,13 @@ std::filesystem::path CommandLine::outputPath() const
 
 CommandLine parseCommandLine(int argc, const char* const argv[])
 {
-    // A scene file called "info" or "merge" is ./info or ./merge.
+    // A scene file called "info", "merge" or "denoise" is ./info, ./merge or ./denoise.
     if (argc > 1 && std::string(argv[1]) == "info")
         return parseInfo(argc, argv);
     if (argc > 1 && std::string(argv[1]) == "merge")
         return parseMerge(argc, argv);
+    if (argc > 1 && std::string(argv[1]) == "denoise")
+        return parseDenoise(argc, argv);
 
     CommandLine line;
     std::vector<std::string> positional;
@@ -448,6 +467,7 @@ std::string usageText()
        raytracer SCENE [WIDTH HEIGHT] [SECONDS] --resume FILE.exr [--spp N] [options]
        raytracer merge OUT.exr IN.exr... [--png FILE.png] [--stats-output FILE]
        raytracer info FILE
+       raytracer denoise IN.exr OUT
 
 Renders SCENE (a .in scene file) by path tracing on the GPU, WIDTH x HEIGHT pixels
 (default 640 480). Without SECONDS or --spp a window shows the image converging until it
@@ -467,6 +487,8 @@ moments, so that renders can be merged and resumed (docs/SCALE_OUT.md):
                         --png FILE: the tone-mapped picture too; --stats-output FILE: the
                         merged statistics
   info                  prints what a file says of itself
+  denoise               writes IN.exr (a render or merge with feature buffers) denoised by
+                        Open Image Denoise into OUT (docs/DENOISING.md)
 )" + optionsHelp();
 }
 

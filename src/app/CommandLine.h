@@ -12,7 +12,7 @@
 
 namespace app {
 
-enum class Action { Render, Help, Version, PrintFeatures, PrintShader, Info, Merge };
+enum class Action { Render, Help, Version, PrintFeatures, PrintShader, Info, Merge, Denoise };
 
 // raytracer merge OUT.exr IN.exr... [--png FILE] [--stats-output FILE]
 struct MergeRequest {
@@ -20,6 +20,12 @@ struct MergeRequest {
     std::vector<std::filesystem::path> inputs;
     std::optional<std::filesystem::path> picture;  // --png: the tone-mapped picture too
     std::optional<std::filesystem::path> statisticsOutput;
+};
+
+// raytracer denoise IN.exr OUT
+struct DenoiseRequest {
+    std::filesystem::path input;   // an .exr with feature buffers (--feature-buffers)
+    std::filesystem::path output;  // .exr, .pfm, .hdr or a picture format
 };
 
 // What the command line asks for. Its options, and the render settings among them, are the
@@ -40,6 +46,8 @@ struct CommandLine {
     std::optional<std::filesystem::path> output;
     std::optional<std::filesystem::path> statisticsOutput;
     bool headless = false;
+    // --denoise: each output also written denoised, beside it (app/Denoising.h).
+    bool denoise = false;
     // --gl KIND: which OpenGL renders (auto: a window where there is a display and the render
     // is not headless, else EGL, else OSMesa); --gl-device N: the Nth GPU EGL lists, and no
     // other (it implies --gl gpu).
@@ -58,6 +66,7 @@ struct CommandLine {
 
     std::filesystem::path infoFile;  // raytracer info FILE
     MergeRequest merge;              // raytracer merge ...
+    DenoiseRequest denoising;        // raytracer denoise ...
 
     // A render that ends by itself and writes a file (as opposed to a window kept open).
     bool isBatch() const

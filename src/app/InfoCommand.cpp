@@ -71,6 +71,12 @@ int runInfo(const std::filesystem::path& path)
                           std::to_string(file.image.width) + "x" +
                           std::to_string(file.image.height));
     printLine("channels", channels);
+    if (file.channelIndex("albedo.R") >= 0)
+        printLine("feature buffers", "albedo.R/G/B (first-hit albedo), N.X/Y/Z (world-space "
+                                     "normal), Z (camera distance), coverage");
+    for (const io::ImageAttribute& attribute : file.attributes)
+        if (attribute.name == "raytracer:denoised")
+            printLine("denoised", attribute.value);
     printLine("scene", metadata->sceneFile);
     printLine("scene SHA-256", metadata->sceneSha256);
     printLine("camera", film::formatCamera(metadata->camera));

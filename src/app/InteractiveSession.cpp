@@ -244,6 +244,10 @@ bool InteractiveSession::answerInput(const platform::WindowInput& input, double 
                 save();
             else if (press.key == platform::Key::C && !press.control)
                 writeCameraLine();
+            else if (press.key == platform::Key::N) {
+                panelSettings_.previewDenoiser = !panelSettings_.previewDenoiser;
+                renderer_.setPreviewDenoising(panelSettings_.previewDenoiser);
+            }
         }
         // Ctrl makes a key a command (Ctrl+S), not a flight.
         if (!input.controlHeld) {
@@ -263,6 +267,7 @@ bool InteractiveSession::applyPanelSettings(const interaction::PanelSettings& tu
     if (tuned == panelSettings_)
         return false;
     renderer_.setExposure(tuned.exposure);
+    renderer_.setPreviewDenoising(tuned.previewDenoiser);
     const bool viewChanged = tuned.hitTolerance != panelSettings_.hitTolerance ||
                              tuned.maxBounces != panelSettings_.maxBounces ||
                              tuned.environment != panelSettings_.environment;

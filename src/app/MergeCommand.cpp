@@ -145,6 +145,14 @@ int runMerge(const MergeRequest& request, const InterruptWatch& interrupt)
     for (const film::RenderFile& render : renders)
         parts.push_back(&render.accumulation);
     const film::Accumulation merged = film::combineAccumulations(parts);
+    // Feature buffers survive a merge only where every input has them.
+    for (std::size_t i = 0; i < renders.size() && !merged.hasFeatures(); ++i)
+        if (renders[i].accumulation.hasFeatures()) {
+            std::cout << "merge: note: not every input has feature buffers (" +
+                             request.inputs[i].string() + " has): the merged file keeps none"
+                      << std::endl;
+            break;
+        }
     refuseInexactCounts(merged);
     const film::RenderMetadata metadata = mergedMetadata(request.inputs, renders);
 

@@ -1,4 +1,6 @@
 #include "app/RenderCommand.h"
+#include "app/Denoising.h"
+#include "film/Denoiser.h"
 
 #include "app/BuildInfo.h"
 #include "app/ErrorTargetRun.h"
@@ -41,6 +43,8 @@ std::vector<io::OutputRequest> outputRequests(const CommandLine& line)
     std::vector<io::OutputRequest> outputs = {{line.outputPath(), io::OutputKind::Image}};
     if (line.statisticsOutput)
         outputs.push_back({*line.statisticsOutput, io::OutputKind::Statistics});
+    if (line.denoise)
+        outputs.push_back({denoisedPath(line.outputPath()), io::OutputKind::Image});
     return outputs;
 }
 
@@ -193,12 +197,19 @@ RenderSetup prepareRender(CommandLine& line)
     setup.sceneDigest = sceneSha256(filesOfScene(line.scene, setup.scene));
     if (line.resume)
         setup.resumed = readResumedRender(line, setup.scene, setup.sceneDigest);
+    // --denoise needs the features; a resumed render keeps the ones its file holds.
+    if (line.denoise || (setup.resumed && setup.resumed->accumulation.hasFeatures()))
+        line.settings.featureBuffers = true;
+    if (line.denoise)
+        film::denoiserLibrary();  // found before anything is rendered, or a clear error
     setup.writesFile = line.isBatch() || line.output.has_value();
     if (setup.writesFile) {
         io::checkOutputsCanBeWritten(outputRequests(line));
         std::vector<std::filesystem::path> outputs = {line.outputPath()};
         if (line.statisticsOutput)
             outputs.push_back(*line.statisticsOutput);
+        if (line.denoise)
+            outputs.push_back(denoisedPath(line.outputPath()));
         removeStaleTemporariesOf(outputs);
     }
     // A resumed render goes on where the file left it: no window, whose camera and settings
@@ -218,6 +229,9 @@ RenderSetup prepareRender(CommandLine& line)
     settings::RenderSettings settings = line.settings;
     // The window's panel switches the environment off without a recompile.
     settings.switchableEnvironment = setup.context->hasWindow();
+    // The window's preview denoiser is guided by the feature buffers.
+    if (setup.context->hasWindow())
+        settings.featureBuffers = true;
     setup.renderer = std::make_unique<render::ProgressiveRenderer>(setup.scene, line.width,
                                                                    line.height, settings);
     // A window samples every pixel alike (InteractiveSession).
@@ -336,7 +350,7 @@ std::string summaryLine(const RenderSetup& setup, const film::Accumulation& accu
 // The picture and the statistics, with what the files say of themselves. The window's
 // picture is the one on screen, drawn once more and read back.
 void writeOutputs(RenderSetup& setup, const CommandLine& line, const film::Accumulation& accumulation,
-                  const RenderRun& run, bool interrupted)
+                  const RenderRun& run, bool interrupted, double& denoiseSeconds)
 {
     render::ProgressiveRenderer& renderer = *setup.renderer;
     io::Image windowPicture;
@@ -372,10 +386,18 @@ void writeOutputs(RenderSetup& setup, const CommandLine& line, const film::Accum
     }
     if (interrupted)
         metadata.interrupted = interruptionNote(line, renderer.samplesPerPixel(), run.seconds);
-    // Both images, or neither (io/OutputFiles.h).
-    io::writeAllOrNothing(renderOutputs(
+    // All images, or none (io/OutputFiles.h).
+    std::vector<io::OutputImage> outputs = renderOutputs(
         {line.outputPath()}, line.statisticsOutput, accumulation, metadata,
-        [&] { return fromWindow ? windowPicture : renderer.toneMapped(); }));
+        [&] { return fromWindow ? windowPicture : renderer.toneMapped(); });
+    if (line.denoise) {
+        const auto start = std::chrono::steady_clock::now();
+        outputs.push_back(denoisedOutput(denoisedPath(line.outputPath()),
+                                         denoisedRadiance(accumulation), metadata,
+                                         line.outputPath(), renderer.exposure()));
+        denoiseSeconds = secondsSince(start);
+    }
+    io::writeAllOrNothing(outputs);
 }
 
 // Writes what the render promised and prints its summary; returns the exit status.
@@ -412,8 +434,14 @@ int finishRender(RenderSetup& setup, const CommandLine& line, const RenderRun& r
     }
 
     if (setup.writesFile) {
-        writeOutputs(setup, line, accumulation, run, interrupted);
+        double denoiseSeconds = 0.0;
+        writeOutputs(setup, line, accumulation, run, interrupted, denoiseSeconds);
         summary += " -> " + line.outputPath().string();
+        if (line.denoise) {
+            char seconds[48];
+            std::snprintf(seconds, sizeof seconds, " (denoised in %.2f s)", denoiseSeconds);
+            summary += " and " + denoisedPath(line.outputPath()).string() + seconds;
+        }
         if (line.statisticsOutput)
             summary += " and " + line.statisticsOutput->string();
     }

@@ -1,6 +1,7 @@
 #include "app/BuildInfo.h"
 #include "app/CommandLine.h"
 #include "app/InfoCommand.h"
+#include "app/Denoising.h"
 #include "app/Interrupt.h"
 #include "app/MergeCommand.h"
 #include "app/RenderCommand.h"
@@ -48,6 +49,8 @@ int main(int argc, char* argv[])
             return unlessInterrupted(interrupt, app::runInfo(line.infoFile));
         case app::Action::Merge:
             return app::runMerge(line.merge, interrupt);
+        case app::Action::Denoise:
+            return unlessInterrupted(interrupt, app::runDenoise(line.denoising));
         }
     } catch (const app::UsageError& error) {
         std::cerr << "raytracer: " << error.what() << "\n";

@@ -12,6 +12,12 @@ Accumulation::Accumulation(int width, int height)
 {
 }
 
+void Accumulation::addEmptyFeatures()
+{
+    albedoDepth = io::Image(width(), height(), 4);
+    normalCoverage = io::Image(width(), height(), 4);
+}
+
 double Accumulation::sampleVariance(int x, int y) const
 {
     const double kept = samplesKept(x, y);
@@ -22,6 +28,38 @@ double Accumulation::sampleVariance(int x, int y) const
                               3.0;
     return std::max(0.0, sumSquares / (kept - 1.0));
 }
+
+namespace {
+
+// Means weighted by the samples kept; the depth by the samples that hit (kept x coverage).
+void combineFeatures(const std::vector<const Accumulation*>& parts, int x, int y,
+                     Accumulation& combined)
+{
+    double kept = 0.0;
+    double hits = 0.0;
+    double sums[8] = {};
+    for (const Accumulation* part : parts) {
+        const double partKept = part->samplesKept(x, y);
+        const double partHits = partKept * part->normalCoverage.at(x, y, 3);
+        kept += partKept;
+        hits += partHits;
+        for (int c = 0; c < 3; ++c) {
+            sums[c] += partKept * part->albedoDepth.at(x, y, c);
+            sums[4 + c] += partKept * part->normalCoverage.at(x, y, c);
+        }
+        sums[3] += partHits * part->albedoDepth.at(x, y, 3);
+        sums[7] += partHits;
+    }
+    for (int c = 0; c < 3; ++c) {
+        combined.albedoDepth.at(x, y, c) = kept > 0.0 ? static_cast<float>(sums[c] / kept) : 0.0f;
+        combined.normalCoverage.at(x, y, c) =
+            kept > 0.0 ? static_cast<float>(sums[4 + c] / kept) : 0.0f;
+    }
+    combined.albedoDepth.at(x, y, 3) = hits > 0.0 ? static_cast<float>(sums[3] / hits) : 0.0f;
+    combined.normalCoverage.at(x, y, 3) = kept > 0.0 ? static_cast<float>(hits / kept) : 0.0f;
+}
+
+}  // namespace
 
 Accumulation combineAccumulations(const std::vector<const Accumulation*>& parts)
 {
@@ -34,6 +72,10 @@ Accumulation combineAccumulations(const std::vector<const Accumulation*>& parts)
             throw std::invalid_argument("accumulations of different sizes cannot be combined");
 
     Accumulation combined(width, height);
+    const bool features = std::all_of(parts.begin(), parts.end(),
+                                      [](const Accumulation* part) { return part->hasFeatures(); });
+    if (features)
+        combined.addEmptyFeatures();
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             double count = 0.0;
@@ -59,6 +101,8 @@ Accumulation combineAccumulations(const std::vector<const Accumulation*>& parts)
             }
             combined.estimate.at(x, y, 3) = static_cast<float>(count);
             combined.moments.at(x, y, 3) = static_cast<float>(discarded);
+            if (features)
+                combineFeatures(parts, x, y, combined);
         }
     return combined;
 }

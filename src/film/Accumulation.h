@@ -6,6 +6,15 @@
 //             discarded (NaN, infinite or negative)
 // A pixel's next sample index is its kept plus discarded count (shaders/modules/sampler.glsl),
 // so an accumulation is all a render needs to go on.
+// With feature buffers (--feature-buffers, docs/DENOISING.md), each the mean over the samples
+// kept, of what each sample's camera path met first:
+//   albedoDepth     rgb: the albedo of the first surface that is not a perfect mirror or
+//                   glass (tinted by those passed through; the environment's radiance,
+//                   clamped to 1, where the path escapes), a: the camera ray's distance to
+//                   its first hit, the mean over the samples whose camera ray hit something
+//   normalCoverage  rgb: that surface's world-space normal (0 where none), a: the fraction
+//                   of samples whose camera ray hit something (its depth's weight)
+// Both empty (width 0) in a render without them.
 #include "io/Image.h"
 
 #include <cstdint>
@@ -20,11 +29,16 @@ inline constexpr std::int64_t kLargestSampleCount = std::int64_t(1) << 24;
 struct Accumulation {
     io::Image estimate;
     io::Image moments;
+    io::Image albedoDepth;
+    io::Image normalCoverage;
 
     Accumulation() = default;
     // Every pixel without a sample.
     Accumulation(int width, int height);
 
+    bool hasFeatures() const { return albedoDepth.width > 0; }
+    // Gives every pixel zero features (no sample kept), making hasFeatures() true.
+    void addEmptyFeatures();
     int width() const { return estimate.width; }
     int height() const { return estimate.height; }
     float samplesKept(int x, int y) const { return estimate.at(x, y, 3); }
@@ -49,7 +63,9 @@ struct Accumulation {
 // Golub and LeVeque ("Updating formulae and a pairwise algorithm for computing sample
 // variances", 1979):
 //   n = na + nb,  d = mean_b - mean_a,  mean = mean_a + d nb / n,  M2 = M2a + M2b + d^2 na nb / n
-// in double precision, rounded to float once at the end.
+// in double precision, rounded to float once at the end. Feature means combine weighted by
+// the samples kept (depth by the samples that hit), where every part has them; the result
+// has none where one part has none.
 Accumulation combineAccumulations(const std::vector<const Accumulation*>& parts);
 
 // Linear radiance, RGB.

@@ -6,8 +6,11 @@
 // combining it with other samples needs (film/Accumulation.h), each channel named for what
 // it is:
 //   R G B  samples  samplesDiscarded  sumSquaredDeviations.R  .G  .B
-// with the metadata (film/RenderMetadata.h) in its header. A viewer shows R, G, B; the
-// rest is a layer beside them. The statistics file holds
+// and, where the render kept feature buffers (--feature-buffers, Accumulation.h),
+//   albedo.R .G .B  N.X .Y .Z  Z  coverage
+// (the first-hit albedo, world-space normal, camera distance and the fraction of samples whose
+// camera ray hit something), with the metadata (film/RenderMetadata.h) in its header. A viewer
+// shows R, G, B; the rest are layers beside them. The statistics file holds
 //   samples  samplesDiscarded  varianceOfMean
 // (varianceOfMean: the channel average of the variance of the mean radiance).
 #include "io/OutputFiles.h"
@@ -22,6 +25,9 @@ namespace film {
 
 const std::vector<std::string>& accumulationChannelNames();
 const std::vector<std::string>& statisticsChannelNames();
+// The feature buffers' channels, in Accumulation's order: albedoDepth's r, g, b, then
+// normalCoverage's r, g, b, then albedoDepth's a (Z), normalCoverage's a (coverage).
+const std::vector<std::string>& featureChannelNames();
 
 // The EXR of a render: radiance, accumulation and metadata, and the SHA-256 of its pixels
 // (film/RenderFileChecks.h).

@@ -2,6 +2,7 @@
 
 #include "io/Sha256.h"
 #include "film/Accumulation.h"
+#include "film/RenderFile.h"
 
 #include <algorithm>
 #include <cmath>
@@ -53,6 +54,9 @@ public:
             means_[c] = file.channelIndex(means[c]);
             moments_[c] = file.channelIndex(moments[c]);
         }
+        const std::vector<std::string>& features = featureChannelNames();
+        for (std::size_t c = 0; c < features.size(); ++c)
+            features_[c] = file.channelIndex(features[c]);
     }
 
     void check(int x, int y) const
@@ -101,9 +105,27 @@ public:
                            ", all of it in one sample; twice that is allowed for rounding)");
         }
         checkVariance(x, y);
+        checkFeatures(x, y);
     }
 
 private:
+    // Feature means (Accumulation.h): albedo from 0 to 1 (the environment's radiance is
+    // clamped to 1), normals a mean of unit vectors, depth from 0, coverage a fraction.
+    void checkFeatures(int x, int y) const
+    {
+        const double lowest[8] = {0, 0, 0, -1.001, -1.001, -1.001, 0, 0};
+        const double highest[8] = {1.001, 1.001, 1.001, 1.001, 1.001, 1.001, 3.4e38, 1.0};
+        for (int c = 0; c < 8; ++c) {
+            if (features_[c] < 0)
+                continue;
+            const double feature = value(x, y, features_[c]);
+            if (!std::isfinite(feature) || feature < lowest[c] || feature > highest[c])
+                refuse(x, y, features_[c],
+                       "is not a feature mean (finite, from " + number(lowest[c]) + " to " +
+                           number(highest[c]) + ")");
+        }
+    }
+
     double value(int x, int y, int channel) const { return file_.image.at(x, y, channel); }
 
     void checkVariance(int x, int y) const
@@ -129,6 +151,7 @@ private:
     std::int64_t largestCount_;
     int kept_, discarded_, variance_;
     int means_[3], moments_[3];
+    int features_[8];
 };
 
 }  // namespace

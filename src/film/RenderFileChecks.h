@@ -27,7 +27,9 @@ inline constexpr double kLargestMeanRadiance = 549755813888.0;
 //                             non-negative samples of that mean deviate the most from it when
 //                             one holds all of it, n (n - 1) mean^2; twice that leaves room for
 //                             the rounding of a running mean over 2^24 samples
-//  varianceOfMean             (a statistics file) finite, from 0.
+//  varianceOfMean             (a statistics file) finite, from 0
+//  albedo.R/G/B, N.X/Y/Z, Z, coverage  (feature buffers) finite, albedo 0 to 1, normals -1 to
+//                             1, depth from 0, coverage 0 to 1.
 // Only an OpenEXR file is checked (an 8-bit picture's values are whatever they are). Throws
 // std::runtime_error "FILE: pixel (X, Y), channel NAME: VALUE ..." for the first value that
 // is not.

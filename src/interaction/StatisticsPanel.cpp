@@ -13,12 +13,13 @@ namespace interaction {
 const char* const StatisticsPanel::kHelp =
     "left drag: orbit   right/middle drag: pan   wheel: dolly   W A S D Q E: fly "
     "(Shift: faster)   R: the file's camera   C: write the camera as a scene-file line   "
-    "Ctrl+S: save PNG + EXR   Tab: this panel   Esc: quit";
+    "N: preview denoiser   Ctrl+S: save PNG + EXR   Tab: this panel   Esc: quit";
 
 bool PanelSettings::operator==(const PanelSettings& other) const
 {
     return exposure == other.exposure && hitTolerance == other.hitTolerance &&
-           maxBounces == other.maxBounces && environment == other.environment;
+           maxBounces == other.maxBounces && environment == other.environment &&
+           previewDenoiser == other.previewDenoiser;
 }
 
 namespace {
@@ -134,6 +135,7 @@ PanelSettings StatisticsPanel::draw(const PanelReadings& readings, const PanelSe
         ImGui::Checkbox("environment light", &tuned.environment);
         if (ImGui::Button("write camera line (C)"))
             cameraLineRequested_ = true;
+        ImGui::Checkbox("preview denoiser (N)", &tuned.previewDenoiser);
 
         if (!readings.status.empty()) {
             ImGui::Separator();

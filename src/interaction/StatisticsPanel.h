@@ -37,6 +37,8 @@ struct PanelSettings {
     float hitTolerance = settings::RenderSettings{}.hitTolerance;
     int maxBounces = settings::RenderSettings{}.maxBounces;
     bool environment = settings::RenderSettings{}.environmentLight;
+    // The preview denoiser (render/PreviewDenoiser.h): display only.
+    bool previewDenoiser = false;
 
     bool operator==(const PanelSettings& other) const;
     bool operator!=(const PanelSettings& other) const { return !(*this == other); }

@@ -159,6 +159,12 @@ void PathTracerProgram::trace(const AccumulationTargets::Set& destination,
                            GL_RGBA32F);
         glBindImageTexture(1, destination.moments.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                            GL_RGBA32F);
+        if (destination.albedoDepth) {
+            glBindImageTexture(2, destination.albedoDepth->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                               GL_RGBA32F);
+            glBindImageTexture(3, destination.normalCoverage->id(), 0, GL_FALSE, 0,
+                               GL_WRITE_ONLY, GL_RGBA32F);
+        }
         glDispatchCompute(static_cast<GLuint>(groupsCovering(region.width, kComputeGroupWidth)),
                           static_cast<GLuint>(groupsCovering(region.height, kComputeGroupHeight)),
                           1);

@@ -17,6 +17,9 @@ constexpr int kEstimateUnit = 0;
 constexpr int kMomentsUnit = 1;
 constexpr int kPigmentTexturesUnit = 3;
 constexpr int kTileSampleTargetsUnit = 4;
+// Feature buffers (--feature-buffers): units 12 to 15 are theirs.
+constexpr int kAlbedoDepthUnit = 12;
+constexpr int kNormalCoverageUnit = 13;
 
 double secondsSince(std::chrono::steady_clock::time_point start)
 {
@@ -81,7 +84,7 @@ ProgressiveRenderer::ProgressiveRenderer(PreparedScene prepared, const KernelCho
       pigmentTextures_(loadPigmentTextures(uniforms_.textureLayers)),
       environmentMap_(std::move(prepared.environmentMap)),
       environmentTextures_(uploadEnvironmentTextures(environmentMap_.get())),
-      targets_(width, height),
+      targets_(width, height, settings.featureBuffers),
       toneMapper_(defaultShaderDirectory()),
       tileSampleTargets_(gl::createTexture2D(GL_R32F, 1, 1, GL_RED, GL_FLOAT, nullptr))
 {
@@ -101,8 +104,7 @@ void ProgressiveRenderer::generateDriverCode()
 {
     program_->program().use();
     setDrawUniforms(0, 0, 0);
-    targets_.previous().estimate.bind(kEstimateUnit);
-    targets_.previous().moments.bind(kMomentsUnit);
+    bindPrevious(targets_.previous());
     pigmentTextures_.texture.bind(kPigmentTexturesUnit);
     bindEnvironmentTextures();
     program_->trace(targets_.next(), {0, 0, 1, 1}, width(), height(), triangle_);
@@ -111,6 +113,16 @@ void ProgressiveRenderer::generateDriverCode()
     program_->uniforms().checkEveryDeclaredSet();
     glFinish();
     gl::throwOnGlError("generating the shader's code");
+}
+
+void ProgressiveRenderer::bindPrevious(const AccumulationTargets::Set& source) const
+{
+    source.estimate.bind(kEstimateUnit);
+    source.moments.bind(kMomentsUnit);
+    if (source.albedoDepth) {
+        source.albedoDepth->bind(kAlbedoDepthUnit);
+        source.normalCoverage->bind(kNormalCoverageUnit);
+    }
 }
 
 void ProgressiveRenderer::bindEnvironmentTextures() const
@@ -131,6 +143,10 @@ void ProgressiveRenderer::uploadAll()
     uniforms.set("uPreviousMoments", kMomentsUnit);
     uniforms.set("uPigmentTextures", kPigmentTexturesUnit);
     uniforms.set("uTileSampleTargets", kTileSampleTargetsUnit);
+    if (uniforms.declares("uPreviousAlbedoDepth")) {
+        uniforms.set("uPreviousAlbedoDepth", kAlbedoDepthUnit);
+        uniforms.set("uPreviousNormalCoverage", kNormalCoverageUnit);
+    }
     // Their units whether or not the scene has a map: a shader without one reads neither.
     uniforms.set("uEnvironmentMap", EnvironmentMapTextures::kRadianceUnit);
     uniforms.set("uEnvironmentDistribution", EnvironmentMapTextures::kDistributionUnit);
@@ -201,7 +217,9 @@ void ProgressiveRenderer::setSettings(const settings::RenderSettings& settings)
     const settings::ShaderVariant variant = settings_.variant;
     const bool switchableEnvironment = settings_.switchableEnvironment;
     const settings::PathKernel kernel = settings_.kernel;
+    const bool featureBuffers = settings_.featureBuffers;
     settings_ = settings;
+    settings_.featureBuffers = featureBuffers;
     settings_.variant = variant;
     settings_.switchableEnvironment = switchableEnvironment;
     settings_.kernel = kernel;
@@ -214,7 +232,7 @@ void ProgressiveRenderer::resize(int width, int height)
     if (width == this->width() && height == this->height())
         return;
     checkRenderSize(width, height);
-    targets_ = AccumulationTargets(width, height);
+    targets_ = AccumulationTargets(width, height, settings_.featureBuffers);
     rowsPerBand_ = height;
     frames_ = 0;
     samplesPerPixel_ = 0;
@@ -230,6 +248,12 @@ void ProgressiveRenderer::resumeFrom(const film::Accumulation& accumulation)
             "cannot resume a " + std::to_string(accumulation.width()) + "x" +
             std::to_string(accumulation.height()) + " accumulation in a " +
             std::to_string(width()) + "x" + std::to_string(height()) + " render");
+    if (accumulation.hasFeatures() != settings_.featureBuffers)
+        throw std::invalid_argument(
+            accumulation.hasFeatures()
+                ? "cannot resume an accumulation with feature buffers in a render without them"
+                : "cannot resume an accumulation without feature buffers in a render with them: "
+                  "its samples have no features to go on from");
     targets_ = AccumulationTargets(accumulation);
     frames_ = 0;
     samplesPerPixel_ = samplesTakenSpan(accumulation).most;
@@ -239,7 +263,7 @@ void ProgressiveRenderer::resumeFrom(const film::Accumulation& accumulation)
 
 void ProgressiveRenderer::restartAccumulation()
 {
-    targets_ = AccumulationTargets(width(), height());
+    targets_ = AccumulationTargets(width(), height(), settings_.featureBuffers);
     frames_ = 0;
     samplesPerPixel_ = 0;
     previewDivisor_ = 0;
@@ -254,6 +278,10 @@ void ProgressiveRenderer::clearAccumulation()
     glDisable(GL_SCISSOR_TEST);
     glClearBufferfv(GL_COLOR, 0, zero);  // estimate
     glClearBufferfv(GL_COLOR, 1, zero);  // moments
+    if (shown.albedoDepth) {
+        glClearBufferfv(GL_COLOR, 2, zero);
+        glClearBufferfv(GL_COLOR, 3, zero);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     gl::throwOnGlError("restarting the accumulation");
     frames_ = 0;
@@ -276,9 +304,7 @@ void ProgressiveRenderer::renderPreview(int divisor, int maxBounces)
                                          static_cast<float>(previewHeight)));
     uniforms.set("uMaxBounces", std::min(maxBounces, settings_.maxBounces));
     setDrawUniforms(1, 0, 0);
-    const AccumulationTargets::Set& source = targets_.previous();
-    source.estimate.bind(kEstimateUnit);
-    source.moments.bind(kMomentsUnit);
+    bindPrevious(targets_.previous());
     pigmentTextures_.texture.bind(kPigmentTexturesUnit);
     bindEnvironmentTextures();
     program_->trace(targets_.next(), {0, 0, previewWidth, previewHeight}, width(), height(),
@@ -345,8 +371,7 @@ bool ProgressiveRenderer::drawFrame(const std::function<bool()>& keepGoing, int 
 
     program_->program().use();
     setDrawUniforms(2 * samples, target, tileSize_);
-    source.estimate.bind(kEstimateUnit);
-    source.moments.bind(kMomentsUnit);
+    bindPrevious(source);
     pigmentTextures_.texture.bind(kPigmentTexturesUnit);
     bindEnvironmentTextures();
     tileSampleTargets_.bind(kTileSampleTargetsUnit);
@@ -408,6 +433,10 @@ film::Accumulation ProgressiveRenderer::accumulation() const
     film::Accumulation state;
     state.estimate = readTarget(targets_.previous().estimate, 4);
     state.moments = readTarget(targets_.previous().moments, 4);
+    if (targets_.hasFeatures()) {
+        state.albedoDepth = readTarget(*targets_.previous().albedoDepth, 4);
+        state.normalCoverage = readTarget(*targets_.previous().normalCoverage, 4);
+    }
     return state;
 }
 
@@ -441,8 +470,26 @@ void ProgressiveRenderer::displayToWindow(int windowWidth, int windowHeight) con
         shownWidth = coarseSide(width(), previewDivisor_);
         shownHeight = coarseSide(height(), previewDivisor_);
     }
-    toneMapper_.draw(targets_.previous().estimate, shownWidth, shownHeight, windowWidth,
-                     windowHeight, triangle_, exposure_);
+    const bool denoised = previewDenoising_ && canPreviewDenoise() && !showsPreview();
+    toneMapper_.draw(denoised ? previewDenoised() : targets_.previous().estimate, shownWidth,
+                     shownHeight, windowWidth, windowHeight, triangle_, exposure_);
+}
+
+const gl::Texture& ProgressiveRenderer::previewDenoised() const
+{
+    if (!previewDenoiser_)
+        previewDenoiser_ = std::make_unique<PreviewDenoiser>(defaultShaderDirectory());
+    const gl::Texture& filtered =
+        previewDenoiser_->filter(targets_.previous(), width(), height(), triangle_);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return filtered;
+}
+
+io::Image ProgressiveRenderer::previewDenoisedRadiance() const
+{
+    if (!canPreviewDenoise())
+        throw std::logic_error("the preview denoiser needs feature buffers");
+    return readTarget(previewDenoised(), 3);
 }
 
 }  // namespace render

@@ -6,6 +6,7 @@
 #include "film/AdaptiveSampling.h"
 #include "render/EnvironmentMapTextures.h"
 #include "render/PathTracerProgram.h"
+#include "render/PreviewDenoiser.h"
 #include "render/ReloadDecision.h"
 #include "settings/RenderSettings.h"
 #include "render/ScenePreparation.h"
@@ -116,6 +117,14 @@ public:
     io::Image toneMapped() const;
     // Draws the tone-mapped picture into the window's default framebuffer.
     void displayToWindow(int windowWidth, int windowHeight) const;
+    // The window's preview denoiser (render/PreviewDenoiser.h): display only, never in
+    // toneMapped() or any file. Takes effect only with feature buffers (canPreviewDenoise).
+    void setPreviewDenoising(bool on) { previewDenoising_ = on; }
+    bool previewDenoising() const { return previewDenoising_; }
+    bool canPreviewDenoise() const { return targets_.hasFeatures(); }
+    // What the preview denoiser makes of the accumulation: linear RGB, top row first (for
+    // tests and docs/DENOISING.md's measurements). Throws std::logic_error without features.
+    io::Image previewDenoisedRadiance() const;
     // The tone map's exposure (display only: the accumulation goes on).
     void setExposure(float exposure) { exposure_ = exposure; }
     float exposure() const { return exposure_; }
@@ -137,6 +146,8 @@ private:
     void uploadAll();
     void setDrawUniforms(int samplesPerFrame, int sampleTarget, int tileSize);
     void bindEnvironmentTextures() const;
+    // The accumulation the next draw reads, on its units.
+    void bindPrevious(const AccumulationTargets::Set& source) const;
     void generateDriverCode();
     void restartAccumulation();
     bool drawFrame(const std::function<bool()>& keepGoing, int samples, int target);
@@ -166,6 +177,9 @@ private:
     int rowsPerBand_ = 0;
     int previewDivisor_ = 0;  // 0: the estimate is the accumulation
     float exposure_ = ToneMapper::kDefaultExposure;
+    bool previewDenoising_ = false;
+    mutable std::unique_ptr<PreviewDenoiser> previewDenoiser_;  // made at its first use
+    const gl::Texture& previewDenoised() const;
     double firstFrameSeconds_ = 0.0;
     double lastSecondsPerSample_ = 0.0;
 };

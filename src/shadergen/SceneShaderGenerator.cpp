@@ -40,6 +40,7 @@ ShaderBuild shaderBuild(const settings::RenderSettings& settings)
     build.exactGeometry = settings.exactGeometry;
     build.profileCounters = settings.profileCounters;
     build.marchBoxesCylindersAndDisks = settings.marchBoxesCylindersAndDisks;
+    build.featureBuffers = settings.featureBuffers;
     return build;
 }
 
@@ -119,6 +120,7 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
     else
         out << "#define ENVIRONMENT_KIND ENVIRONMENT_KIND_FROM_UNIFORM\n";
     define(out, "PROFILE_COUNTERS", build.profileCounters ? 1 : 0);
+    define(out, "FEATURE_BUFFERS", build.featureBuffers ? 1 : 0);
     define(out, "EXACT_BOXES_CYLINDERS_AND_DISKS", build.marchBoxesCylindersAndDisks ? 0 : 1);
     out << "#define THINNEST_EXACT_TORUS " << Primitive<Torus>::kThinnestExact << "\n";
     // Where every object is met exactly (polyhedra, spheres, lights), no ray marches: the

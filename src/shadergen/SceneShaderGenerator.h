@@ -80,6 +80,9 @@ struct ShaderBuild {
     // edges and contacts can still be judged against exact intersection on shapes that
     // have one (tests/render/EdgeBiasTest.cpp), and what meeting them exactly saves measured.
     bool marchBoxesCylindersAndDisks = false;
+    // Each pixel also accumulates its first-hit albedo, normal and depth (FEATURE_BUFFERS,
+    // path_tracer_main.glsl; --feature-buffers).
+    bool featureBuffers = false;
 };
 
 // What of the settings shapes the shader's code (the rest are uniforms).

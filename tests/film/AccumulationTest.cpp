@@ -156,5 +156,42 @@ TEST(CombineAccumulations, RefusesAccumulationsOfDifferentSizes)
     EXPECT_THROW(film::combineAccumulations({&a, &b}), std::invalid_argument);
 }
 
+// Feature means combine weighted by the samples kept, the camera distance by the samples
+// whose camera ray hit (kept x coverage); a part without features leaves the result without.
+TEST(CombinedFeatures, AreWeightedByTheSamplesKeptAndTheDepthByTheSamplesThatHit)
+{
+    film::Accumulation a(1, 1);
+    film::Accumulation b(1, 1);
+    a.addEmptyFeatures();
+    b.addEmptyFeatures();
+    a.estimate.at(0, 0, 3) = 3.0f;  // 3 samples, 1 of them hit at distance 2
+    b.estimate.at(0, 0, 3) = 1.0f;  // 1 sample, hit at distance 5
+    const float albedoA[3] = {0.2f, 0.4f, 0.6f};
+    const float albedoB[3] = {1.0f, 0.0f, 0.0f};
+    for (int c = 0; c < 3; ++c) {
+        a.albedoDepth.at(0, 0, c) = albedoA[c];
+        b.albedoDepth.at(0, 0, c) = albedoB[c];
+    }
+    a.normalCoverage.at(0, 0, 1) = 1.0f / 3.0f;  // the one hit's normal (0, 1, 0), over 3
+    b.normalCoverage.at(0, 0, 0) = 1.0f;
+    a.albedoDepth.at(0, 0, 3) = 2.0f;
+    b.albedoDepth.at(0, 0, 3) = 5.0f;
+    a.normalCoverage.at(0, 0, 3) = 1.0f / 3.0f;
+    b.normalCoverage.at(0, 0, 3) = 1.0f;
+
+    const film::Accumulation both = film::combineAccumulations({&a, &b});
+    ASSERT_TRUE(both.hasFeatures());
+    EXPECT_FLOAT_EQ(both.albedoDepth.at(0, 0, 0), 0.4f);  // (3 x 0.2 + 1) / 4
+    EXPECT_FLOAT_EQ(both.albedoDepth.at(0, 0, 1), 0.3f);
+    EXPECT_FLOAT_EQ(both.albedoDepth.at(0, 0, 2), 0.45f);
+    EXPECT_FLOAT_EQ(both.normalCoverage.at(0, 0, 0), 0.25f);
+    EXPECT_FLOAT_EQ(both.normalCoverage.at(0, 0, 1), 0.25f);
+    EXPECT_FLOAT_EQ(both.normalCoverage.at(0, 0, 3), 0.5f);  // 2 hits of 4
+    EXPECT_FLOAT_EQ(both.albedoDepth.at(0, 0, 3), 3.5f);     // (2 + 5) / 2
+
+    const film::Accumulation without(1, 1);
+    EXPECT_FALSE(film::combineAccumulations({&a, &without}).hasFeatures());
+}
+
 }  // namespace
 }  // namespace scale_out_tests

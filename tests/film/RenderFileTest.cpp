@@ -88,6 +88,47 @@ TEST_F(RenderFiles, TheExrNamesItsChannelsForWhatTheyHold)
     EXPECT_EQ(file.image.channels, 8);
 }
 
+// Feature buffers (--feature-buffers) as named layers, read back bit for bit; a value no
+// render holds (an albedo above 1) is refused with its pixel and channel.
+TEST_F(RenderFiles, FeatureBuffersAreNamedLayersReadBackBitForBit)
+{
+    film::Accumulation written = someAccumulation();
+    written.addEmptyFeatures();
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    for (float& value : written.albedoDepth.pixels)
+        value = unit(random);
+    for (float& value : written.normalCoverage.pixels)
+        value = 2.0f * unit(random) - 1.0f;
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 5; ++x) {
+            written.albedoDepth.at(x, y, 3) = 10.0f * unit(random);  // a distance
+            written.normalCoverage.at(x, y, 3) = unit(random);       // a fraction
+        }
+    io::writeAllOrNothing({film::accumulationOutput(folder_ / "f.exr", written, someMetadata())});
+    const io::ImageFileContents file = io::readImageFile(folder_ / "f.exr");
+    for (const char* name : {"albedo.R", "albedo.G", "albedo.B", "N.X", "N.Y", "N.Z", "Z"})
+        EXPECT_GE(file.channelIndex(name), 0) << "no channel " << name;
+    EXPECT_EQ(file.image.at(4, 2, file.channelIndex("Z")), written.albedoDepth.at(4, 2, 3));
+    EXPECT_EQ(file.image.at(1, 1, file.channelIndex("N.Y")), written.normalCoverage.at(1, 1, 1));
+    const film::RenderFile read = film::readRenderFile(folder_ / "f.exr");
+    ASSERT_TRUE(read.accumulation.hasFeatures());
+    EXPECT_EQ(read.accumulation.albedoDepth.pixels, written.albedoDepth.pixels);
+    EXPECT_EQ(read.accumulation.normalCoverage.pixels, written.normalCoverage.pixels);
+    EXPECT_EQ(read.accumulation.estimate.pixels, written.estimate.pixels);
+
+    written.albedoDepth.at(3, 1, 1) = 1.5f;
+    io::writeAllOrNothing({film::accumulationOutput(folder_ / "g.exr", written, someMetadata())});
+    try {
+        film::readRenderFile(folder_ / "g.exr");
+        FAIL() << "an albedo of 1.5 is no render's";
+    } catch (const std::runtime_error& error) {
+        EXPECT_NE(std::string(error.what()).find("pixel (3, 1), channel albedo.G"),
+                  std::string::npos)
+            << error.what();
+    }
+}
+
 TEST_F(RenderFiles, TheStatisticsFileNamesItsChannelsNotRGB)
 {
     io::writeAllOrNothing(

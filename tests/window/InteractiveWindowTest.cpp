@@ -272,11 +272,13 @@ TEST_F(InteractiveWindow, InputThatLeavesTheViewAloneKeepsTheAccumulation)
     start();
     const std::string before = waitForSamples(20);
     ASSERT_GE(samplesInTitle(before), 20) << before;
-    // A mouse move without a button and the panel key change nothing of the view.
+    // A mouse move without a button, the panel key and the preview denoiser's key (display
+    // only) change nothing of the view.
     xdotool({"mousemove", "--window", std::to_string(window_), "20", "20"});
     xdotool({"mousemove", "--window", std::to_string(window_), "120", "90"});
     pressKey(window_, "Tab");
     pressKey(window_, "Tab");
+    pressKey(window_, "n");
     std::this_thread::sleep_for(std::chrono::milliseconds(600));
     const std::string after = windowTitle(window_);
     EXPECT_GT(samplesInTitle(after), samplesInTitle(before))
