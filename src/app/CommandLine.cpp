@@ -1,6 +1,8 @@
 #include "app/CommandLine.h"
 
 #include "io/ImageFormats.h"
+#include "scene/SceneError.h"
+#include "scene/SceneParser.h"
 #include "settings/SettingsTable.h"
 
 #include <algorithm>
@@ -65,6 +67,15 @@ std::string outputFormatsHelp()
         text += "\n" + names + format.holds;
     }
     return text;
+}
+
+// What was wrong in --camera's text, without the file and line a scene's error starts with:
+// "read 'x', expected camera up vector".
+std::string cameraErrorText(const scene::SceneError& error)
+{
+    return (error.token().empty() ? "reached its end"
+                                  : "read '" + scene::shownToken(error.token()) + "'") +
+           ", expected " + error.expected();
 }
 
 // A row of the command line's table: a heading of --help, an option of the program's own

@@ -102,8 +102,10 @@ film::RenderMetadata mergedMetadata(const std::vector<fs::path>& paths,
     return merged;
 }
 
-// The tone-mapped picture, by the renderer's own display pass in a headless context.
-io::Image toneMappedPicture(const film::Accumulation& accumulation)
+// The tone-mapped picture, by the renderer's own display pass in a headless context, at the
+// exposure and by the curve the inputs record (they are one render's: all alike).
+io::Image toneMappedPicture(const film::Accumulation& accumulation,
+                            const settings::RenderSettings& settings)
 {
     platform::ContextRequest request;
     request.headless = true;
@@ -112,7 +114,8 @@ io::Image toneMappedPicture(const film::Accumulation& accumulation)
     const render::ToneMapper toneMapper(scene::FileLookup::dataDirectory() / "shaders");
     const gl::VertexArray triangle;
     return toneMapper.render(targets.previous().estimate, accumulation.width(),
-                             accumulation.height(), triangle);
+                             accumulation.height(), triangle, settings.exposure,
+                             settings.toneCurve);
 }
 
 }  // namespace
@@ -157,7 +160,7 @@ int runMerge(const MergeRequest& request, const InterruptWatch& interrupt)
         return kExitInterrupted;
     }
     io::writeAllOrNothing(renderOutputs(images, request.statisticsOutput, merged, metadata,
-                                        [&] { return toneMappedPicture(merged); }));
+                                        [&] { return toneMappedPicture(merged, metadata.settings); }));
 
     char numbers[160];
     std::snprintf(numbers, sizeof numbers, "%dx%d, %lld spp", metadata.width, metadata.height,

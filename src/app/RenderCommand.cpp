@@ -17,12 +17,15 @@
 #include "render/ProgressiveRenderer.h"
 #include "film/RenderFile.h"
 #include "render/ScenePreparation.h"
+#include "scene/Lights.h"
 #include "scene/SceneFeatures.h"
 #include "scene/SceneParser.h"
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -181,6 +184,19 @@ void checkOutputNames(const CommandLine& line)
                          "render being resumed: give another file");
 }
 
+// A scene that gives no light renders black: said on standard error before any time is
+// spent, and refused with --strict.
+void warnOfADarkScene(const CommandLine& line, const scene::Scene& scene)
+{
+    if (scene::emitsLight(scene))
+        return;
+    const std::string why = line.scene.string() + " can emit no light (no light that is not "
+                            "black, no emitting sphere, environment none): its image is black";
+    if (line.strict)
+        throw std::runtime_error(why + " (--strict)");
+    std::cerr << "raytracer: warning: " << why << std::endl;
+}
+
 // Loads the scene and the render resumed, checks the outputs can be written, makes the
 // context and the renderer. `line` takes a resumed file's size and seed where it gives none.
 RenderSetup prepareRender(CommandLine& line)
@@ -189,6 +205,9 @@ RenderSetup prepareRender(CommandLine& line)
     RenderSetup setup;
     // Every texture must be readable before a window opens or a frame is rendered.
     setup.scene = loadScene(line.scene);
+    if (line.camera)
+        setup.scene.camera = *line.camera;
+    warnOfADarkScene(line, setup.scene);
     setup.sceneDigest = sceneSha256(filesOfScene(line.scene, setup.scene));
     if (line.resume)
         setup.resumed = readResumedRender(line, setup.scene, setup.sceneDigest);
@@ -372,13 +391,145 @@ void writeOutputs(RenderSetup& setup, const CommandLine& line, const film::Accum
         [&] { return fromWindow ? windowPicture : renderer.toneMapped(); }));
 }
 
-// Writes what the render promised and prints its summary; returns the exit status.
+// How a render ended, for the summary, --summary-json and the exit status.
+struct RenderEnd {
+    std::string stopReason;  // "samples", "time limit", "target error", ...
+    std::optional<bool> targetReached;
+    int exitStatus = kExitSuccess;
+};
+
+RenderEnd renderEnd(const RenderSetup& setup, const CommandLine& line, const RenderRun& run,
+                    bool interrupted)
+{
+    RenderEnd end;
+    if (setup.errorTarget)
+        end.targetReached = setup.errorTarget->reached();
+    if (interrupted) {
+        end.stopReason = run.endedEarly ? "window closed" : "interrupted";
+        end.exitStatus = kExitInterrupted;
+        return end;
+    }
+    if (!line.isBatch()) {
+        end.stopReason = "window closed";
+        return end;
+    }
+    const render::ProgressiveRenderer& renderer = *setup.renderer;
+    if (setup.errorTarget && setup.errorTarget->reached()) {
+        end.stopReason = "target error";
+    } else if ((setup.errorTarget && setup.errorTarget->limitReached()) ||
+               (line.samplesPerPixel && renderer.samplesPerPixel() >= *line.samplesPerPixel)) {
+        end.stopReason = "samples";
+    } else {
+        end.stopReason = "time limit";
+    }
+    if (setup.errorTarget && !setup.errorTarget->reached())
+        end.exitStatus = kExitTargetNotReached;
+    return end;
+}
+
+// `text` as a JSON string.
+std::string jsonString(const std::string& text)
+{
+    std::string quoted = "\"";
+    for (const char c : text) {
+        if (c == '"' || c == '\\') {
+            quoted += '\\';
+            quoted += c;
+        } else if (static_cast<unsigned char>(c) < 0x20) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+            quoted += escaped;
+        } else {
+            quoted += c;
+        }
+    }
+    return quoted + "\"";
+}
+
+std::string jsonNumber(double value)
+{
+    if (!std::isfinite(value))
+        return "null";
+    char text[40];
+    std::snprintf(text, sizeof text, "%.9g", value);
+    return text;
+}
+
+// The summary's numbers as one JSON object (--summary-json; README, docs/USAGE.md).
+std::string summaryJson(const RenderSetup& setup, const CommandLine& line,
+                        const film::Accumulation& accumulation, const RenderRun& run,
+                        const RenderEnd& end, const std::vector<std::filesystem::path>& written)
+{
+    const render::ProgressiveRenderer& renderer = *setup.renderer;
+    const film::SampleCountSpan span = film::samplesTakenSpan(accumulation);
+    const double samplesInAll = film::samplesTakenInAll(accumulation);
+    const double resumedInAll =
+        setup.resumed ? film::samplesTakenInAll(setup.resumed->accumulation) : 0.0;
+    // As the summary line counts them: the paths this run traced.
+    const double paths =
+        renderer.samplesAdaptively()
+            ? samplesInAll - resumedInAll
+            : static_cast<double>(renderer.width()) * renderer.height() *
+                  (renderer.samplesPerPixel() - setup.samplesResumed);
+    std::string text = "{\n";
+    auto field = [&text](const char* name, const std::string& value) {
+        text += std::string(text.size() > 2 ? ",\n" : "") + "  " + jsonString(name) + ": " + value;
+    };
+    field("scene", jsonString(line.scene.string()));
+    field("width", std::to_string(renderer.width()));
+    field("height", std::to_string(renderer.height()));
+    field("samplesPerPixel", std::to_string(renderer.samplesPerPixel()));
+    field("fewestSamples", std::to_string(span.fewest));
+    field("mostSamples", std::to_string(span.most));
+    field("samplesResumed", std::to_string(setup.samplesResumed));
+    field("samplesDiscarded", std::to_string(renderer.discardedSamples()));
+    field("seconds", jsonNumber(run.seconds));
+    field("setupSeconds", jsonNumber(setup.setupSeconds));
+    field("megapathsPerSecond", jsonNumber(run.seconds > 0.0 ? paths / run.seconds / 1e6 : 0.0));
+    const film::ErrorEstimate* estimate =
+        setup.errorTarget && setup.errorTarget->estimate() ? &*setup.errorTarget->estimate()
+                                                           : nullptr;
+    field("targetError", line.targetError ? jsonNumber(*line.targetError) : "null");
+    field("errorReached", estimate ? jsonNumber(estimate->relativeError) : "null");
+    field("errorUncertainty", estimate ? jsonNumber(estimate->uncertainty) : "null");
+    field("targetReached",
+          end.targetReached ? (*end.targetReached ? "true" : "false") : std::string("null"));
+    field("stopReason", jsonString(end.stopReason));
+    field("exitStatus", std::to_string(end.exitStatus));
+    std::string outputs;
+    for (const std::filesystem::path& path : written)
+        outputs += (outputs.empty() ? "" : ", ") + jsonString(path.string());
+    field("outputs", "[" + outputs + "]");
+    field("device",
+          jsonString(describeRenderingDevice(setup.context->identity(), renderer.kernel())));
+    return text + "\n}\n";
+}
+
+void writeSummaryJson(const std::filesystem::path& path, const std::string& json)
+{
+    std::ofstream file(path, std::ios::binary | std::ios::trunc);
+    file << json;
+    file.close();
+    if (!file)
+        throw std::runtime_error("cannot write the summary to " + path.string());
+}
+
+// Writes what the render promised and prints its summary (unless --quiet) and writes it as
+// JSON (--summary-json); returns the exit status.
 int finishRender(RenderSetup& setup, const CommandLine& line, const RenderRun& run,
                  bool interrupted)
 {
     render::ProgressiveRenderer& renderer = *setup.renderer;
     const film::Accumulation accumulation = renderer.accumulation();
     std::string summary = summaryLine(setup, accumulation, run);
+    auto report = [&](const std::string& text, const RenderEnd& end,
+                      const std::vector<std::filesystem::path>& written) {
+        if (!line.quiet)
+            std::cout << text << std::endl;
+        if (line.summaryJson)
+            writeSummaryJson(*line.summaryJson,
+                             summaryJson(setup, line, accumulation, run, end, written));
+    };
 
     // An image without a sample is all black, and a resumed render without a new sample is
     // the file it resumed: neither is written, nor over an older file.
@@ -398,28 +549,36 @@ int finishRender(RenderSetup& setup, const CommandLine& line, const RenderRun& r
         }
         std::error_code error;
         const bool older = std::filesystem::exists(line.outputPath(), error);
-        std::cout << summary << " (interrupted before the first " << newSample
-                  << "sample: nothing written"
-                  << (older ? ", " + line.outputPath().string() + " left as it was" : "")
-                  << ")" << std::endl;
+        report(summary + " (interrupted before the first " + newSample +
+                   "sample: nothing written" +
+                   (older ? ", " + line.outputPath().string() + " left as it was" : "") + ")",
+               renderEnd(setup, line, run, interrupted), {});
         return kExitInterrupted;
     }
 
+    std::vector<std::filesystem::path> written;
     if (setup.writesFile) {
         writeOutputs(setup, line, accumulation, run, interrupted);
         summary += " -> " + line.outputPath().string();
-        if (line.statisticsOutput)
+        written.push_back(line.outputPath());
+        if (line.statisticsOutput) {
             summary += " and " + line.statisticsOutput->string();
+            written.push_back(*line.statisticsOutput);
+        }
     }
     if (interrupted)
         summary += " (interrupted)";
-    if (setup.errorTarget) {
+    if (setup.errorTarget)
         setup.errorTarget->conclude(renderer);
+    const RenderEnd end = renderEnd(setup, line, run, interrupted);
+    if (setup.errorTarget)
         summary += "; " + setup.errorTarget->summaryText(
                               targetStop(line, *setup.errorTarget, interrupted));
-    }
-    std::cout << summary << std::endl;
-    return interrupted ? kExitInterrupted : kExitSuccess;
+    if (end.exitStatus == kExitTargetNotReached)
+        summary += " (exit status " + std::to_string(kExitTargetNotReached) +
+                   ": the target error was not reached)";
+    report(summary, end, written);
+    return end.exitStatus;
 }
 
 }  // namespace

@@ -429,7 +429,7 @@ std::uint64_t ProgressiveRenderer::discardedSamples() const
 io::Image ProgressiveRenderer::toneMapped() const
 {
     return toneMapper_.render(targets_.previous().estimate, width(), height(), triangle_,
-                              exposure_);
+                              settings_.exposure, settings_.toneCurve);
 }
 
 void ProgressiveRenderer::displayToWindow(int windowWidth, int windowHeight) const
@@ -442,7 +442,7 @@ void ProgressiveRenderer::displayToWindow(int windowWidth, int windowHeight) con
         shownHeight = coarseSide(height(), previewDivisor_);
     }
     toneMapper_.draw(targets_.previous().estimate, shownWidth, shownHeight, windowWidth,
-                     windowHeight, triangle_, exposure_);
+                     windowHeight, triangle_, settings_.exposure, settings_.toneCurve);
 }
 
 }  // namespace render

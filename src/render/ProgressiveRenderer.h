@@ -116,9 +116,11 @@ public:
     io::Image toneMapped() const;
     // Draws the tone-mapped picture into the window's default framebuffer.
     void displayToWindow(int windowWidth, int windowHeight) const;
-    // The tone map's exposure (display only: the accumulation goes on).
-    void setExposure(float exposure) { exposure_ = exposure; }
-    float exposure() const { return exposure_; }
+    // The tone map's exposure and curve (settings().exposure and toneCurve; display only: the
+    // accumulation goes on).
+    void setExposure(float exposure) { settings_.exposure = exposure; }
+    float exposure() const { return settings_.exposure; }
+    void setToneCurve(settings::ToneCurveKind curve) { settings_.toneCurve = curve; }
 
     const scene::SceneFeatures& features() const { return code_.features; }
     // The kernel that traces the paths (settings().kernel as chosen in this context), and why.
@@ -165,7 +167,6 @@ private:
     int samplesPerPixel_ = 0;
     int rowsPerBand_ = 0;
     int previewDivisor_ = 0;  // 0: the estimate is the accumulation
-    float exposure_ = ToneMapper::kDefaultExposure;
     double firstFrameSeconds_ = 0.0;
     double lastSecondsPerSample_ = 0.0;
 };

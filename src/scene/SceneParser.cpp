@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <filesystem>
+#include <initializer_list>
 #include <optional>
 #include <set>
 #include <string>
@@ -68,7 +69,31 @@ public:
         return scene;
     }
 
+    // A camera alone (parseCameraText): its groups may follow their words.
+    Camera parseCameraAlone()
+    {
+        labelledCamera_ = true;
+        Camera camera;
+        parseCamera(camera);
+        if (!atEnd())
+            fail("the end of the camera (after the field of view, only 'lens R D' may follow)");
+        return camera;
+    }
+
 private:
+    // In a camera alone, the word before a group (any of `words`) is skipped.
+    void skipLabel(std::initializer_list<const char*> words)
+    {
+        if (!labelledCamera_)
+            return;
+        if (const Token* token = peek())
+            for (const char* word : words)
+                if (token->text == word) {
+                    skip();
+                    return;
+                }
+    }
+
     // --- sections -----------------------------------------------------------------------
 
     void parseSectionKeywords(Scene& scene)
@@ -104,11 +129,15 @@ private:
 
     void parseCamera(Camera& camera)
     {
+        skipLabel({"eye"});
         camera.eye = vector3("camera eye position");
+        skipLabel({"target", "look-at"});
         const std::size_t targetToken = mark();
         camera.target = vector3("camera target point");
+        skipLabel({"up"});
         const std::size_t upToken = mark();
         camera.up = vector3("camera up vector");
+        skipLabel({"fovy", "fov"});
         const std::size_t fovToken = mark();
         camera.verticalFieldOfViewDegrees = number("vertical field of view in degrees");
 
@@ -318,6 +347,7 @@ private:
     }
 
     const FileLookup& lookup_;
+    bool labelledCamera_ = false;
 };
 
 }  // namespace
@@ -349,6 +379,14 @@ Scene parseSceneText(const std::string& text, const std::string& fileName,
     Scene scene = parser.parse();
     scene.sourcePath = fileName;
     return scene;
+}
+
+Camera parseCameraText(const std::string& text, const std::string& source)
+{
+    // A camera names no file: nothing is looked up.
+    const FileLookup noFiles{fs::path(), fs::path()};
+    Parser parser(tokenize(text, kMaxTokens), source, noFiles);
+    return parser.parseCameraAlone();
 }
 
 Scene parseSceneFile(const fs::path& path)

@@ -61,6 +61,8 @@ settingChanges()
 {
     static const std::vector<std::pair<std::string, std::function<void(settings::RenderSettings&)>>>
         changes = {
+            {"--exposure", [](settings::RenderSettings& s) { s.exposure = 2.0f; }},
+            {"--tone-curve", [](settings::RenderSettings& s) { s.toneCurve = settings::ToneCurveKind::Agx; }},
             {"--hit-tolerance", [](settings::RenderSettings& s) { s.hitTolerance = 0.5f; }},
             {"--max-steps", [](settings::RenderSettings& s) { s.maxMarchSteps = 64; }},
             {"--over-relaxation", [](settings::RenderSettings& s) { s.overRelaxation = 1.0f; }},
