@@ -3,6 +3,7 @@
 #include "io/ImageFormats.h"
 #include "scene/SceneError.h"
 #include "scene/SceneParser.h"
+#include "scene/Spelling.h"
 #include "settings/SettingsTable.h"
 
 #include <algorithm>
@@ -170,38 +171,18 @@ const std::vector<Entry>& infoEntries()
     return entries;
 }
 
-// The number of single-character insertions, deletions and substitutions that turn one
-// word into the other (Levenshtein).
-std::size_t editDistance(const std::string& a, const std::string& b)
-{
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j)
-        row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-            diagonal = above;
-        }
-    }
-    return row[b.size()];
-}
-
 // " (did you mean --hit-tolerance?)" for the option nearest to `word`, within two edits.
 std::string nearestOptionHint(const std::string& word, const std::vector<Entry>& entries)
 {
-    constexpr std::size_t kMostEdits = 2;
     std::string nearest;
-    std::size_t nearestDistance = kMostEdits + 1;
+    std::size_t nearestDistance = scene::kMostEditsSuggested + 1;
     for (const Entry& entry : entries) {
         if (!entry.isOption())
             continue;
         std::vector<std::string> spellings = entry.description().aliases;
         spellings.push_back(entry.description().flag);
         for (const std::string& spelling : spellings) {
-            const std::size_t distance = editDistance(word, spelling);
+            const std::size_t distance = scene::editDistance(word, spelling);
             if (distance < nearestDistance) {
                 nearest = entry.description().flag;
                 nearestDistance = distance;
