@@ -459,6 +459,10 @@ moments, so that renders can be merged and resumed (docs/SCALE_OUT.md):
                         --png FILE: the tone-mapped picture too; --stats-output FILE: the
                         merged statistics
   info                  prints what a file says of itself
+
+Exit status: 0 done; 1 the scene, a file or the OpenGL failed (or, with --strict, a warning);
+2 the command line cannot be run; 3 a render to --target-error ended at SECONDS or --spp
+before reaching it (its image is written); 130 interrupted (the image so far is written).
 )" + optionsHelp();
 }
 
