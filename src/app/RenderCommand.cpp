@@ -143,10 +143,11 @@ struct RenderRun {
 
 }  // namespace
 
-void removeStaleTemporariesOf(const std::vector<std::filesystem::path>& outputs)
+void removeStaleTemporariesOf(const std::vector<std::filesystem::path>& outputs, bool quiet)
 {
     for (const io::StaleTemporary& removed : io::removeStaleTemporaries(outputs))
-        std::cout << "removed " << removed.path.string() << ", a temporary file left by process "
+        if (!quiet)
+            std::cout << "removed " << removed.path.string() << ", a temporary file left by process "
                   << removed.processId << ", which no longer runs" << std::endl;
 }
 
@@ -178,6 +179,11 @@ void checkOutputNames(const CommandLine& line)
         throw UsageError("--stats-output " + line.statisticsOutput->string() + " names the same "
                          "file as the image, " + line.outputPath().string() +
                          ": give two different files");
+    if (line.summaryJson &&
+        (io::resolveToSameFile(line.outputPath(), *line.summaryJson) ||
+         (line.statisticsOutput && io::resolveToSameFile(*line.statisticsOutput, *line.summaryJson))))
+        throw UsageError("--summary-json " + line.summaryJson->string() + " names a file the "
+                         "render writes its image or statistics to: give another file");
     if (line.resume && line.statisticsOutput &&
         io::resolveToSameFile(*line.resume, *line.statisticsOutput))
         throw UsageError("--stats-output " + line.statisticsOutput->string() + " names the "
@@ -217,7 +223,7 @@ RenderSetup prepareRender(CommandLine& line)
         std::vector<std::filesystem::path> outputs = {line.outputPath()};
         if (line.statisticsOutput)
             outputs.push_back(*line.statisticsOutput);
-        removeStaleTemporariesOf(outputs);
+        removeStaleTemporariesOf(outputs, line.quiet);
     }
     // A resumed render goes on where the file left it: no window, whose camera and settings
     // could leave that.

@@ -33,7 +33,8 @@ int printFeatures(const CommandLine& line);
 int printShader(const CommandLine& line);
 
 // Removes the temporary files that killed runs writing `outputs` left beside them
-// (io::removeStaleTemporaries) and says so on standard output, one line each.
-void removeStaleTemporariesOf(const std::vector<std::filesystem::path>& outputs);
+// (io::removeStaleTemporaries) and says so on standard output, one line each, unless `quiet`.
+void removeStaleTemporariesOf(const std::vector<std::filesystem::path>& outputs,
+                              bool quiet = false);
 
 }  // namespace app
