@@ -335,6 +335,21 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
     if (line.gl == platform::ContextKind::Window && line.resume)
         throw UsageError("--resume renders headless: it does not go with --gl window");
     readPositional(positional, line);
+    if (line.crop) {
+        if (line.crop->x1 > line.width || line.crop->y1 > line.height)
+            throw UsageError("--crop " + film::formatCrop(*line.crop) + " reaches beyond the " +
+                             std::to_string(line.width) + "x" + std::to_string(line.height) +
+                             " frame: X1 and Y1 are at most its width and height");
+        if (line.targetError)
+            throw UsageError("--crop does not go with --target-error (whose error is the "
+                             "whole frame's): give --spp N or SECONDS");
+        if (line.resume)
+            throw UsageError("--crop does not go with --resume: render the crop anew");
+        if (line.action == Action::Render && !line.isBatch())
+            throw UsageError("--crop renders headless: give SECONDS or --spp");
+        if (line.gl == platform::ContextKind::Window)
+            throw UsageError("--crop renders headless: it does not go with --gl window");
+    }
     if (line.resume && line.action == Action::Render && !line.isBatch())
         throw UsageError("--resume goes on to an end: give --spp N (samples per pixel in all), "
                          "--target-error E or SECONDS (more)");

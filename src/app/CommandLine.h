@@ -1,5 +1,6 @@
 #pragma once
 #include "film/AdaptiveSampling.h"
+#include "film/RenderMetadata.h"
 #include "platform/ContextFactory.h"
 #include "scene/Scene.h"
 #include "settings/OptionDescription.h"
@@ -53,6 +54,8 @@ struct CommandLine {
     bool strict = false;
     // --camera: replaces the scene file's camera once the scene is read.
     std::optional<scene::Camera> camera;
+    // --crop: the pixels traced, of WIDTH x HEIGHT.
+    std::optional<film::PixelCrop> crop;
     settings::RenderSettings settings;
     // WIDTH HEIGHT were given (a resumed render takes the file's otherwise).
     bool sizeGiven = false;

@@ -61,6 +61,10 @@ film::RenderFile readResumedRender(CommandLine& line, const scene::Scene& scene,
         throw std::runtime_error(std::string("cannot resume: ") + error.what());
     }
     const film::RenderMetadata& held = resumed.metadata;
+    if (held.crop)
+        throw std::runtime_error("cannot resume " + path.string() + ": it holds the crop " +
+                                 film::formatCrop(*held.crop) + " of its frame only (--crop); "
+                                 "render more of the crop with another --seed and merge");
     if (!line.sizeGiven) {
         line.width = held.width;
         line.height = held.height;
@@ -132,6 +136,7 @@ struct RenderSetup {
     int samplesResumed = 0;  // samples per pixel of the file resumed
     int fewestResumed = 0;   // the fewest any of its pixels holds
     double setupSeconds = 0.0;
+    std::optional<film::PixelCrop> crop;  // --crop
 };
 
 // How the render went: stopped before the end the command line set (its window closed), and
@@ -228,7 +233,7 @@ RenderSetup prepareRender(CommandLine& line)
     // A resumed render goes on where the file left it: no window, whose camera and settings
     // could leave that.
     platform::ContextRequest request = contextRequest(line);
-    request.headless = line.headless || line.resume;
+    request.headless = line.headless || line.resume || line.crop;
     if (platform::makesHeadlessContext(request) && !line.isBatch())
         throw UsageError(std::string(line.headless ? "--headless"
                                      : line.gl != platform::ContextKind::Automatic
@@ -248,11 +253,14 @@ RenderSetup prepareRender(CommandLine& line)
     if (line.targetError)
         setup.errorTarget.emplace(line.adaptiveSampling,
                                   !line.uniformSampling && !setup.context->hasWindow());
+    if (line.crop)
+        setup.renderer->setCrop(line.crop->x0, line.crop->y0, line.crop->x1, line.crop->y1);
     if (setup.resumed) {
         setup.renderer->resumeFrom(setup.resumed->accumulation);
         setup.samplesResumed = setup.renderer->samplesPerPixel();
         setup.fewestResumed = film::samplesTakenSpan(setup.resumed->accumulation).fewest;
     }
+    setup.crop = line.crop;
     setup.setupSeconds = secondsSince(setupStart);
     return setup;
 }
@@ -346,6 +354,13 @@ std::string summaryLine(const RenderSetup& setup, const film::Accumulation& accu
                                         renderer.discardedSamples())
             : Progress::summary(renderer.width(), renderer.height(), renderer.samplesPerPixel(),
                                 run.seconds, renderer.discardedSamples(), setup.samplesResumed);
+    if (const auto& crop = setup.crop) {
+        // The numbers are the crop's: the paths traced.
+        summary = Progress::summary(crop->width(), crop->height(), renderer.samplesPerPixel(),
+                                    run.seconds, renderer.discardedSamples(), 0) +
+                  " (crop " + film::formatCrop(*crop) + " of " + std::to_string(renderer.width()) +
+                  "x" + std::to_string(renderer.height()) + ")";
+    }
     char setupText[64];
     std::snprintf(setupText, sizeof setupText, " (setup %.2f s)", setup.setupSeconds);
     return summary + setupText + " [" +
@@ -391,6 +406,7 @@ void writeOutputs(RenderSetup& setup, const CommandLine& line, const film::Accum
     }
     if (interrupted)
         metadata.interrupted = interruptionNote(line, renderer.samplesPerPixel(), run.seconds);
+    metadata.crop = line.crop;
     // Both images, or neither (io/OutputFiles.h).
     io::writeAllOrNothing(renderOutputs(
         {line.outputPath()}, line.statisticsOutput, accumulation, metadata,
@@ -475,7 +491,8 @@ std::string summaryJson(const RenderSetup& setup, const CommandLine& line,
     const double paths =
         renderer.samplesAdaptively()
             ? samplesInAll - resumedInAll
-            : static_cast<double>(renderer.width()) * renderer.height() *
+            : (setup.crop ? static_cast<double>(setup.crop->width()) * setup.crop->height()
+                          : static_cast<double>(renderer.width()) * renderer.height()) *
                   (renderer.samplesPerPixel() - setup.samplesResumed);
     std::string text = "{\n";
     auto field = [&text](const char* name, const std::string& value) {
@@ -484,6 +501,7 @@ std::string summaryJson(const RenderSetup& setup, const CommandLine& line,
     field("scene", jsonString(line.scene.string()));
     field("width", std::to_string(renderer.width()));
     field("height", std::to_string(renderer.height()));
+    field("crop", setup.crop ? jsonString(film::formatCrop(*setup.crop)) : "null");
     field("samplesPerPixel", std::to_string(renderer.samplesPerPixel()));
     field("fewestSamples", std::to_string(span.fewest));
     field("mostSamples", std::to_string(span.most));

@@ -77,6 +77,10 @@ public:
     // Every setting but the shader's (variant, switchable environment), which stay as built.
     void setSettings(const settings::RenderSettings& settings);
     void resize(int width, int height);
+    // From the next frame on, traces only columns x0 to x1 - 1 and rows y0 to y1 - 1 (row 0
+    // the top; within the image): the other pixels keep what they hold (nothing, from a
+    // fresh start), so the crops of a frame merge into it exactly. Lifted by resize.
+    void setCrop(int x0, int y0, int x1, int y1);
     const settings::RenderSettings& settings() const { return settings_; }
     // The camera the image is rendered from.
     const scene::Camera& camera() const { return scene_.camera; }
@@ -145,6 +149,11 @@ private:
     // Starts the accumulation again without reseeding: cheaper than restartAccumulation,
     // for the many restarts of a view being changed.
     void clearAccumulation();
+    // The crop, or the whole image.
+    PixelRegion tracedRegion() const
+    {
+        return crop_.width > 0 ? crop_ : PixelRegion{0, 0, width(), height()};
+    }
     io::Image readTarget(const gl::Texture& texture, int channels) const;
 
     settings::RenderSettings settings_;
@@ -166,6 +175,9 @@ private:
     int frames_ = 0;
     int samplesPerPixel_ = 0;
     int rowsPerBand_ = 0;
+    // The pixels a frame traces, in GL's coordinates (row 0 the bottom): the whole image
+    // unless setCrop says otherwise; empty (width 0) for the whole image.
+    PixelRegion crop_;
     int previewDivisor_ = 0;  // 0: the estimate is the accumulation
     double firstFrameSeconds_ = 0.0;
     double lastSecondsPerSample_ = 0.0;

@@ -1,5 +1,5 @@
 // The options a renderer's users reach for, run as a user runs them: --camera, --exposure and
-// --tone-curve, the warning for a scene that can emit no light (--strict), the exit status of
+// --tone-curve, --crop and the merge of crops, the warning for a scene that can emit no light (--strict), the exit status of
 // a render that ends before its target error, --quiet and --summary-json.
 #include "app/ProgramInFolder.h"
 #include "film/RenderFile.h"
@@ -182,6 +182,64 @@ TEST_F(RenderOptions, SummaryJsonOfATargetErrorSaysWhetherItWasReached)
                               "\"stopReason\": \"time limit\"", "\"exitStatus\": 3"})
         EXPECT_NE(json.find(field), std::string::npos) << field << " not in:\n" << json;
     EXPECT_EQ(json.find("\"errorReached\": null"), std::string::npos) << json;
+}
+
+// --crop: the full frame with only the crop traced, each pixel's samples those of the full
+// render (they follow from the seed, the pixel and the sample index), so crops that share no
+// pixel merge into the full render bit for bit.
+TEST_F(RenderOptions, CropsOfARenderMergeIntoItsFullFrameExactly)
+{
+    for (const std::vector<std::string>& arguments :
+         {std::vector<std::string>{"--output", "full.exr"},
+          std::vector<std::string>{"--crop", "0 0 24 6", "--output", "top.exr"},
+          std::vector<std::string>{"--crop", "0,6,24,16", "--output", "bottom.exr"}}) {
+        std::vector<std::string> command = {scene1(), "24", "16", "--spp", "3"};
+        command.insert(command.end(), arguments.begin(), arguments.end());
+        const ProcessResult result = run(command);
+        ASSERT_EQ(result.exitStatus, 0) << describe(result);
+    }
+    const ProcessResult merge = run({"merge", "merged.exr", "top.exr", "bottom.exr"});
+    ASSERT_EQ(merge.exitStatus, 0) << describe(merge);
+    const film::RenderFile full = film::readRenderFile(folder_ / "full.exr");
+    const film::RenderFile merged = film::readRenderFile(folder_ / "merged.exr");
+    EXPECT_EQ(merged.accumulation.estimate.pixels, full.accumulation.estimate.pixels);
+    EXPECT_EQ(merged.accumulation.moments.pixels, full.accumulation.moments.pixels);
+    EXPECT_FALSE(merged.metadata.crop.has_value()) << "the crops cover the frame";
+    EXPECT_EQ(merged.metadata.samplesPerPixel, 3);
+}
+
+TEST_F(RenderOptions, ACropTracesOnlyItsPixelsAndIsRecorded)
+{
+    render({"--crop", "4 2 12 10", "--output", "crop.exr"});
+    const film::RenderFile crop = film::readRenderFile(folder_ / "crop.exr");
+    ASSERT_TRUE(crop.metadata.crop.has_value());
+    EXPECT_EQ(film::formatCrop(*crop.metadata.crop), "4 2 12 10");
+    EXPECT_EQ(crop.accumulation.width(), 24) << "the file holds the full frame";
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 24; ++x) {
+            const bool inside = x >= 4 && x < 12 && y >= 2 && y < 10;
+            EXPECT_EQ(crop.accumulation.samplesTaken(x, y), inside ? 1.0f : 0.0f)
+                << "pixel " << x << ", " << y;
+        }
+}
+
+TEST_F(RenderOptions, CropsThatShareAPixelAndASeedAreNotMerged)
+{
+    render({"--crop", "0 0 14 16", "--output", "left.exr"});
+    render({"--crop", "10 0 24 16", "--output", "right.exr"});
+    const ProcessResult merge = run({"merge", "both.exr", "left.exr", "right.exr"});
+    EXPECT_EQ(merge.exitStatus, 1) << describe(merge);
+    EXPECT_NE(merge.standardError.find("crops (--crop) that share no pixel"), std::string::npos)
+        << describe(merge);
+}
+
+TEST_F(RenderOptions, ACropBeyondTheFrameIsRefused)
+{
+    const ProcessResult result = run({scene1(), "24", "16", "--spp", "1", "--crop", "0 0 30 8"});
+    EXPECT_EQ(result.exitStatus, 2) << describe(result);
+    EXPECT_NE(result.standardError.find("--crop 0 0 30 8 reaches beyond the 24x16 frame"),
+              std::string::npos)
+        << describe(result);
 }
 
 }  // namespace

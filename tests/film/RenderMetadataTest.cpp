@@ -132,6 +132,23 @@ TEST(RenderMetadata, FileWithoutItIsNotAnErrorButAMissingOrMalformedAttributeIs)
     }
 }
 
+// --crop: recorded where there is one, nothing where the whole frame was traced, and a crop
+// that holds no pixel is refused as malformed.
+TEST(RenderMetadata, ACropSurvivesTheAttributes)
+{
+    film::RenderMetadata written = someRender();
+    EXPECT_FALSE(film::metadataFromAttributes(film::metadataAttributes(written), "x.exr")->crop);
+    written.crop = film::PixelCrop{2, 3, 10, 7};
+    const auto read = film::metadataFromAttributes(film::metadataAttributes(written), "x.exr");
+    ASSERT_TRUE(read && read->crop);
+    EXPECT_TRUE(*read->crop == *written.crop) << film::formatCrop(*read->crop);
+    std::vector<io::ImageAttribute> attributes = film::metadataAttributes(written);
+    for (io::ImageAttribute& attribute : attributes)
+        if (attribute.name == "raytracer:crop")
+            attribute.value = "10 3 2 7";
+    EXPECT_THROW(film::metadataFromAttributes(attributes, "x.exr"), std::runtime_error);
+}
+
 TEST(RenderMetadata, ChangingEveryImageSettingIsADifference)
 {
     ASSERT_EQ(settingChanges().size(), film::imageSettings().size())
