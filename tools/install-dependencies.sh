@@ -1,20 +1,35 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the project needs, only those missing. Idempotent.
-#   tools/install-dependencies.sh [extra-package ...]
+#   tools/install-dependencies.sh [--program] [extra-package ...]
+# --program: only what building and running the program takes (tools/render-demo.sh), not
+# the tests' and the scale-out tools' (GoogleTest, Xvfb, xdotool, GNU parallel, Slurm, munge,
+# OpenImageIO's tools, Python).
 set -euo pipefail
 
+program_only=0
+if [ "${1:-}" = --program ]; then
+  program_only=1
+  shift
+fi
+
+# The program: the compiler and build tools, and the libraries it links (CMakeLists.txt).
 packages=(
   cmake ninja-build g++ pkg-config
   libglfw3-dev libglew-dev libglm-dev libosmesa6-dev libegl-dev libegl-mesa0
-  libopenimageio-dev libopenexr-dev openimageio-tools
+  libopenimageio-dev libopenexr-dev
   libimgui-dev libx11-dev
   libssl-dev
-  parallel slurm-wlm munge
-  libgtest-dev
-  xvfb xauth xdotool
-  python3 python3-numpy
-  "$@"
 )
+if [ "$program_only" = 0 ]; then
+  packages+=(
+    openimageio-tools
+    parallel slurm-wlm munge
+    libgtest-dev
+    xvfb xauth xdotool
+    python3 python3-numpy
+  )
+fi
+packages+=("$@")
 
 missing=()
 for package in "${packages[@]}"; do

@@ -15,6 +15,7 @@
 struct RayCulling {
     uint mask;             // bit k set: piece k may be approached
     float escapeDistance;  // past this distance along the ray no piece may be approached
+    float entryDistance;   // before this distance along the ray no piece may be approached
 };
 
 // Cones so wide that the tolerance grows as fast as the ray travels (a field of view near
@@ -23,7 +24,7 @@ const float kMaxCullableToleranceGrowth = 0.25;
 
 RayCulling noRayCulling()
 {
-    return RayCulling(0xffffffffu, FLOAT_MAX);
+    return RayCulling(0xffffffffu, FLOAT_MAX, 0.0);
 }
 
 // A piece inside a ball (centre, radius). The ball is widened by the largest tolerance the
@@ -43,9 +44,11 @@ void cullByBall(inout RayCulling culling, uint bit, vec4 ball, vec3 origin, vec3
     float halfChordSquared = reach * reach - dot(offAxis, offAxis);
     if (halfChordSquared < 0.0)
         return;
-    float exit = along + sqrt(halfChordSquared);
+    float halfChord = sqrt(halfChordSquared);
+    float exit = along + halfChord;
     if (exit < 0.0)
         return;
     culling.mask |= bit;
     culling.escapeDistance = max(culling.escapeDistance, exit);
+    culling.entryDistance = min(culling.entryDistance, max(along - halfChord, 0.0));
 }

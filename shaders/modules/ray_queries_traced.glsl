@@ -87,13 +87,15 @@ SurfaceHit marchedSurface(MarchHit hit, vec3 p, bool onSurface, vec3 origin, vec
     surface.footprint = coneFootprint(cone, hit.t);
     surface.tolerance = hitTolerance(cone, hit.t);
     int object = hit.object;
+#if HAS_MARCHED_UNION
     if (onSurface) {
         // Where two objects come within the tolerance of each other (a contact), the
         // march's nearest object at the stop may be the other one. (Only marched objects:
-        // the march met none of those met exactly.)
+        // the march met none of those met exactly; with one marched surface it is that one.)
         sceneDistanceAndObjectCulled(p, 0xffffffffu, object);
         COUNT_WORK(workEvaluations, 1);
     }
+#endif
     // On the surface, with the on-surface step; off it, or on a surface of zero thickness,
     // at the march's stop, which lies on the side the ray came from.
     vec3 normal = sceneNormal(p, kOnSurfaceNormalStep * surface.tolerance, onSurface,
@@ -342,8 +344,9 @@ vec3 marchedTransmittance(Surface s, vec3 wi, float cosLeaving, float distance,
     float stopTolerance = min(tolerance, 0.5 * start.clearance);
     int retries = 0;
     int stepsLeft = gMaxMarchSteps;
-    float t = 0.0;
-    float acceptedT = 0.0;
+    // Before the first piece's bound the segment can approach nothing.
+    float t = min(culling.entryDistance, clearDistance);
+    float acceptedT = t;
     float acceptedRadius = 0.0;
     for (int stop = 0; stop < kMaxShadowStops && loopIterationAllowed(); ++stop) {
         float radius = shadowMarch(start.origin, wi, insideSign, culling.mask, clearDistance,
@@ -463,5 +466,5 @@ float cameraMarchStart(ivec2 pixel)
 #endif
     RayCulling culling = sceneRayCulling(gCameraEye, axis, tolerance0, growth);
     float limit = min(gFarDistance, culling.escapeDistance);
-    return coneClearance(gCameraEye, axis, tolerance0, growth, culling.mask, limit);
+    return coneClearance(gCameraEye, axis, tolerance0, growth, culling, limit);
 }

@@ -92,12 +92,13 @@ MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone
 {
     float farDistance = min(endDistance, culling.escapeDistance);
     float omega = gOverRelaxation;
-    float t = startDistance;
+    // Before the first piece's bound the ray can approach nothing: no step is spent there.
+    float t = max(startDistance, culling.entryDistance);
     float stepLength = 0.0;
     float previousRadius = 0.0;
     // The last point the march accepted (not one a failed relaxed step reached), for the
     // secant slope at a hit.
-    float acceptedT = startDistance;
+    float acceptedT = t;
     float acceptedRadius = 0.0;
     float bestError = FLOAT_MAX;
     MarchHit best = marchNothingApproached();
@@ -195,15 +196,17 @@ float shadowMarch(vec3 origin, vec3 direction, float insideSign, uint mask, floa
 // A step from t may advance by as much as leaves every point of the cone up to t + step
 // farther from the nearest surface than its tolerance: for a distance d at the axis that is
 // (d - tolerance0 - growth t) / (1 + growth) (cone marching, as in Amanatides, "Ray tracing
-// with cones", 1984). The pieces `mask` leaves must be those of a culling by the same cone.
-float coneClearance(vec3 origin, vec3 axis, float tolerance0, float growth, uint mask,
+// with cones", 1984). `culling` must be a culling by the same cone: the march starts where
+// it first comes near a piece's bound and evaluates only the pieces it leaves.
+float coneClearance(vec3 origin, vec3 axis, float tolerance0, float growth, RayCulling culling,
                     float limit)
 {
     const int kConeSteps = 64;
-    float t = 0.0;
+    float t = min(culling.entryDistance, limit);
     for (int step = 0; step < kConeSteps && t < limit && loopIterationAllowed(); ++step) {
         COUNT_WORK(workCameraSteps, 1);
-        float clearance = sceneDistanceCulled(origin + t * axis, mask) - tolerance0 - growth * t;
+        float clearance =
+            sceneDistanceCulled(origin + t * axis, culling.mask) - tolerance0 - growth * t;
         float advance = 0.9 * gStepScale * clearance / (1.0 + growth);
         // Near a surface the steps shrink geometrically; the rays' own marches, each from
         // here, finish the approach.

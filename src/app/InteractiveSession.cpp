@@ -6,10 +6,14 @@
 #include "app/SceneLoading.h"
 #include "app/Snapshot.h"
 #include "film/ConvergenceEstimate.h"
+#include "scene/CameraLine.h"
 #include "scene/SceneBounds.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
+#include <fstream>
 #include <iostream>
 
 namespace app {
@@ -38,11 +42,6 @@ double secondsBetween(std::chrono::steady_clock::time_point from,
     return std::chrono::duration<double>(to - from).count();
 }
 
-float sceneRadius(const scene::Scene& scene)
-{
-    return scene::computeSceneBounds(scene).radius;
-}
-
 // A message on one line, for the title.
 std::string oneLine(const std::string& text)
 {
@@ -66,7 +65,7 @@ InteractiveSession::InteractiveSession(platform::GlfwWindowContext& window,
       line_(line),
       interrupt_(interrupt),
       fileScene_(scene),
-      camera_(scene.camera, sceneRadius(scene)),
+      camera_(scene.camera, scene),
       panel_(window.glfwWindow())
 {
     watcher_.watch(filesOfScene(line.scene, scene));
@@ -119,7 +118,9 @@ bool InteractiveSession::run()
     // What is written at the end is an accumulation, not the coarse picture of a moving view.
     if (renderer_.showsPreview() && (line_.isBatch() || line_.output))
         renderer_.renderFrame({}, 1);
-    renderSeconds_ = secondsBetween(start_, Clock::now());
+    const Clock::time_point end = Clock::now();
+    windowSeconds_ = secondsBetween(start_, end);
+    accumulationSeconds_ = secondsBetween(accumulationStart_, end);
     return reached;
 }
 
@@ -242,6 +243,8 @@ bool InteractiveSession::answerInput(const platform::WindowInput& input, double 
                 camera_.returnHome();
             else if (press.key == platform::Key::S && press.control)
                 save();
+            else if (press.key == platform::Key::C && !press.control)
+                writeCameraLine();
         }
         // Ctrl makes a key a command (Ctrl+S), not a flight.
         if (!input.controlHeld) {
@@ -304,7 +307,7 @@ bool InteractiveSession::reloadChangedFiles()
         std::string editedSha256 = app::sceneSha256(filesOfScene(line_.scene, edited));
         const Clock::time_point loaded = Clock::now();
         interaction::CameraController camera = camera_;
-        camera.setHome(edited.camera, sceneRadius(edited),
+        camera.setHome(edited.camera, edited,
                        render::cameraLinesChanged(fileScene_.camera, edited.camera));
         scene::Scene shown = edited;
         shown.camera = camera.camera();
@@ -368,6 +371,29 @@ void InteractiveSession::save()
     }
 }
 
+void InteractiveSession::writeCameraLine()
+{
+    const std::string line = scene::cameraLine(camera_.camera());
+    // On a line of its own, ready to paste over the scene file's camera.
+    std::cout << line << std::endl;
+    std::filesystem::path file = line_.scene;
+    file.replace_extension(".camera");
+    {
+        std::ofstream out(file, std::ios::trunc);
+        out << "# The window's camera for " << line_.scene.filename().string()
+            << ": eye, look-at point, up, field of view; paste it over the scene's camera.\n"
+            << line << "\n";
+        out.flush();
+        if (!out) {
+            setStatus("camera line printed; cannot write " + file.string() + ": " +
+                          std::strerror(errno),
+                      true);
+            return;
+        }
+    }
+    setStatus("camera line printed and written to " + file.string() + ": " + line, false);
+}
+
 void InteractiveSession::setStatus(std::string status, bool isError)
 {
     status_ = std::move(status);
@@ -413,6 +439,8 @@ bool InteractiveSession::showFrame(const std::optional<double>& relativeError)
     readings.statusIsError = statusIsError_;
     const interaction::PanelSettings tuned = panel_.draw(readings, panelSettings_);
     window_.present();
+    if (panel_.takeCameraLineRequest())
+        writeCameraLine();
     if (secondsBetween(lastTitle_, Clock::now()) >= kTitleIntervalSeconds) {
         window_.setTitle(title());
         lastTitle_ = Clock::now();

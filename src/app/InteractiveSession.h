@@ -22,8 +22,9 @@ namespace app {
 // rate. The scene file and the files it names are watched: an edit of values re-uploads
 // uniforms, an edit of structure rebuilds the shader, a broken edit leaves the last good
 // scene on screen with the error in the panel, the title and on standard error. Ctrl+S
-// saves PNG + EXR; Tab shows or hides the statistics panel; a resized window renders at its
-// new size.
+// saves PNG + EXR; C (or the panel's button) writes the camera as a scene-file line to the
+// terminal and to SCENE.camera beside the scene; Tab shows or hides the statistics panel; a
+// resized window renders at its new size.
 class InteractiveSession {
 public:
     // `scene`: the scene file as loaded, whose shader `renderer` was built with (with
@@ -37,8 +38,11 @@ public:
     // render. The renderer then holds an accumulation, never a preview.
     bool run();
 
-    // Seconds from the start of run to its end.
-    double renderSeconds() const { return renderSeconds_; }
+    // Seconds from the start of run to its end: the time the window was open.
+    double windowSeconds() const { return windowSeconds_; }
+    // Seconds the accumulation on screen at the end took: from the last change of the view,
+    // scene or settings that restarted it to the end of run.
+    double accumulationSeconds() const { return accumulationSeconds_; }
     // SHA-256 of the files of the scene on screen (app/SceneDigest.h): the one last loaded.
     const std::string& sceneSha256() const { return sceneSha256_; }
 
@@ -71,6 +75,9 @@ private:
     // screen was replaced (not when the edit changes nothing the GPU is given).
     bool reloadChangedFiles();
     void save();
+    // The camera on screen as a scene file's camera line (scene::cameraLine), on standard
+    // output and in SCENE.camera beside the scene file.
+    void writeCameraLine();
     void setStatus(std::string status, bool isError);
     void restartClock();
     // Draws the estimate and the panel, and shows them; true when the panel changed a
@@ -105,7 +112,8 @@ private:
     Clock::time_point lastTitle_;
     // A structural reload: when it started, until the first frame after it is drawn.
     std::optional<Clock::time_point> rebuildStart_;
-    double renderSeconds_ = 0.0;
+    double windowSeconds_ = 0.0;
+    double accumulationSeconds_ = 0.0;
 };
 
 }  // namespace app

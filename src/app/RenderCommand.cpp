@@ -143,7 +143,8 @@ struct RenderSetup {
 // for how long it rendered.
 struct RenderRun {
     bool endedEarly = false;
-    double seconds = 0.0;
+    double seconds = 0.0;  // of the accumulation the outputs hold
+    std::optional<double> windowSeconds;  // the time the window was open, where there was one
 };
 
 }  // namespace
@@ -274,7 +275,8 @@ RenderRun runInWindow(RenderSetup& setup, const CommandLine& line, const Interru
     RenderRun run;
     // A window closed before the end the command line set is an interrupted render.
     run.endedEarly = !session.run() && line.isBatch();
-    run.seconds = session.renderSeconds();
+    run.seconds = session.accumulationSeconds();
+    run.windowSeconds = session.windowSeconds();
     setup.sceneDigest = session.sceneSha256();
     return run;
 }
@@ -361,8 +363,12 @@ std::string summaryLine(const RenderSetup& setup, const film::Accumulation& accu
                   " (crop " + film::formatCrop(*crop) + " of " + std::to_string(renderer.width()) +
                   "x" + std::to_string(renderer.height()) + ")";
     }
-    char setupText[64];
-    std::snprintf(setupText, sizeof setupText, " (setup %.2f s)", setup.setupSeconds);
+    char setupText[96];
+    if (run.windowSeconds)
+        std::snprintf(setupText, sizeof setupText, " (setup %.2f s; window open %.2f s)",
+                      setup.setupSeconds, *run.windowSeconds);
+    else
+        std::snprintf(setupText, sizeof setupText, " (setup %.2f s)", setup.setupSeconds);
     return summary + setupText + " [" +
            describeRenderingDevice(setup.context->identity(), renderer.kernel()) + "]";
 }

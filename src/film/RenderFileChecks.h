@@ -1,5 +1,5 @@
 #pragma once
-// What a render's file must hold before merge, --resume or info uses it (README.md, "Files
+// What a render's file must hold before merge, --resume or info uses it (docs/USAGE.md, "Files
 // from elsewhere"). The file may come from another machine, a disk that filled, a copy that
 // went wrong or someone who made it up, so every value of every pixel is checked against what
 // a render can hold, and the first that no render holds is reported with its pixel and

@@ -39,6 +39,14 @@ void Texture::bind(int unit) const
     glBindTexture(target_, id_);
 }
 
+void Texture::setSampling(GLint minFilter, GLint magFilter, GLint wrapS, GLint wrapT) const
+{
+    glTexParameteri(target_, GL_TEXTURE_MIN_FILTER, minFilter);
+    glTexParameteri(target_, GL_TEXTURE_MAG_FILTER, magFilter);
+    glTexParameteri(target_, GL_TEXTURE_WRAP_S, wrapS);
+    glTexParameteri(target_, GL_TEXTURE_WRAP_T, wrapT);
+}
+
 Texture createTexture2D(GLenum internalFormat, int width, int height, GLenum format,
                         GLenum type, const void* pixels)
 {
@@ -47,10 +55,7 @@ Texture createTexture2D(GLenum internalFormat, int width, int height, GLenum for
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(internalFormat), width, height, 0, format,
                  type, pixels);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    texture.setSampling(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, 0);
     throwOnGlError("creating a " + std::to_string(width) + "x" + std::to_string(height) +
                    " texture");

@@ -17,6 +17,9 @@ public:
     GLenum target() const { return target_; }
     // Binds to texture unit `unit`.
     void bind(int unit) const;
+    // How the bound texture is filtered and wrapped (it must be bound: GL sets the parameters
+    // of the texture bound to the active unit).
+    void setSampling(GLint minFilter, GLint magFilter, GLint wrapS, GLint wrapT) const;
 
 private:
     GLenum target_;

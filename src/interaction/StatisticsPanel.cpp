@@ -4,6 +4,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 
@@ -11,8 +12,8 @@ namespace interaction {
 
 const char* const StatisticsPanel::kHelp =
     "left drag: orbit   right/middle drag: pan   wheel: dolly   W A S D Q E: fly "
-    "(Shift: faster)   R: the file's camera   Ctrl+S: save PNG + EXR   Tab: this panel   "
-    "Esc: quit";
+    "(Shift: faster)   R: the file's camera   C: write the camera as a scene-file line   "
+    "Ctrl+S: save PNG + EXR   Tab: this panel   Esc: quit";
 
 bool PanelSettings::operator==(const PanelSettings& other) const
 {
@@ -23,8 +24,11 @@ bool PanelSettings::operator==(const PanelSettings& other) const
 
 namespace {
 
-// Text wraps at this width: the panel stays narrow enough to leave the picture visible.
+// Text wraps at this width, or the window's less a margin: the panel stays narrow enough
+// to leave the picture visible.
 constexpr float kWrapWidth = 330.0f;
+// The panel's margin from the window's edges.
+constexpr float kMargin = 4.0f;
 
 }  // namespace
 
@@ -54,6 +58,13 @@ StatisticsPanel::~StatisticsPanel()
     ImGui::DestroyContext(context_);
 }
 
+bool StatisticsPanel::takeCameraLineRequest()
+{
+    const bool requested = cameraLineRequested_;
+    cameraLineRequested_ = false;
+    return requested;
+}
+
 bool StatisticsPanel::wantsMouse() const
 {
     return visible_ && ImGui::GetIO().WantCaptureMouse;
@@ -71,10 +82,18 @@ PanelSettings StatisticsPanel::draw(const PanelReadings& readings, const PanelSe
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     if (visible_) {
-        ImGui::SetNextWindowPos(ImVec2(4.0f, 4.0f), ImGuiCond_FirstUseEver);
+        // Never larger than the window: in a small window the panel scrolls (the wheel over
+        // it, or its scroll bar), so that every part of it can be reached.
+        const ImVec2 display = ImGui::GetIO().DisplaySize;
+        const float wrapWidth = std::max(100.0f, std::min(kWrapWidth, display.x - 6.0f * kMargin));
+        ImGui::SetNextWindowPos(ImVec2(kMargin, kMargin), ImGuiCond_FirstUseEver);
+        ImGui::SetNextWindowSizeConstraints(
+            ImVec2(0.0f, 0.0f), ImVec2(std::max(display.x - 2.0f * kMargin, 50.0f),
+                                       std::max(display.y - 2.0f * kMargin, 50.0f)));
         ImGui::SetNextWindowBgAlpha(0.75f);
         ImGui::Begin("statistics (Tab hides)", nullptr,
-                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing);
+                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing |
+                         ImGuiWindowFlags_HorizontalScrollbar);
         ImGui::Text("%dx%d   %d spp   %.2f spp/s   %.1f s", readings.width, readings.height,
                     readings.samplesPerPixel, readings.samplesPerSecond,
                     readings.elapsedSeconds);
@@ -102,7 +121,7 @@ PanelSettings StatisticsPanel::draw(const PanelReadings& readings, const PanelSe
             for (float error : errors)
                 largest = std::max(largest, error);
             ImGui::PlotLines("##convergence", errors.data(), static_cast<int>(errors.size()), 0,
-                             caption, 0.0f, largest, ImVec2(kWrapWidth - 10.0f, 50.0f));
+                             caption, 0.0f, largest, ImVec2(wrapWidth - 10.0f, 50.0f));
         }
 
         ImGui::Separator();
@@ -125,10 +144,12 @@ PanelSettings StatisticsPanel::draw(const PanelReadings& readings, const PanelSe
         ImGui::SliderInt("max bounces", &tuned.maxBounces, 0, 64);
         ImGui::PopItemWidth();
         ImGui::Checkbox("environment light", &tuned.environment);
+        if (ImGui::Button("write camera line (C)"))
+            cameraLineRequested_ = true;
 
         if (!readings.status.empty()) {
             ImGui::Separator();
-            ImGui::PushTextWrapPos(kWrapWidth);
+            ImGui::PushTextWrapPos(wrapWidth);
             if (readings.statusIsError)
                 ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", readings.status.c_str());
             else
@@ -138,7 +159,7 @@ PanelSettings StatisticsPanel::draw(const PanelReadings& readings, const PanelSe
         if (ImGui::CollapsingHeader("shader features", ImGuiTreeNodeFlags_DefaultOpen))
             ImGui::TextUnformatted(readings.features.c_str());
         ImGui::Separator();
-        ImGui::PushTextWrapPos(kWrapWidth);
+        ImGui::PushTextWrapPos(wrapWidth);
         ImGui::TextDisabled("%s", kHelp);
         ImGui::TextDisabled("resizing the window renders at its new size");
         ImGui::PopTextWrapPos();

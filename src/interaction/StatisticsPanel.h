@@ -62,6 +62,9 @@ public:
     // settings as the user left them.
     PanelSettings draw(const PanelReadings& readings, const PanelSettings& settings);
 
+    // Whether the panel's "write camera line" button was pressed since the last call.
+    bool takeCameraLineRequest();
+
     // The mouse or the keyboard is busy with the panel: the view must not take that input.
     bool wantsMouse() const;
     bool wantsKeyboard() const;
@@ -72,6 +75,7 @@ public:
 private:
     ImGuiContext* context_ = nullptr;
     bool visible_ = false;
+    bool cameraLineRequested_ = false;
 };
 
 }  // namespace interaction

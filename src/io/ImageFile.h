@@ -14,7 +14,7 @@
 
 namespace io {
 
-// The largest image the program reads (README.md, "Files from elsewhere"), checked against
+// The largest image the program reads (docs/USAGE.md, "Files from elsewhere"), checked against
 // the header before anything is allocated for its pixels:
 // - no side above 65536 (the command line's limit) and at most 2^25 pixels (33.5 million:
 //   8K UHD, 7680x4320, is within it), with at most 16 channels: 2 GiB of 32-bit floats;

@@ -6,7 +6,7 @@
 namespace io {
 
 // The image formats the program writes, described once: the command line's check, its --help
-// and the writer all read this table (README.md lists the same).
+// and the writer all read this table (docs/USAGE.md lists the same).
 struct ImageFormat {
     std::vector<std::string> extensions;  // lower case, with the dot
     bool linearRadiance;                  // linear HDR values; else a tone-mapped picture

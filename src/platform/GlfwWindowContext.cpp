@@ -37,6 +37,7 @@ std::optional<Key> keyOf(int glfwKey)
     case GLFW_KEY_E: return Key::E;
     case GLFW_KEY_R: return Key::R;
     case GLFW_KEY_TAB: return Key::Tab;
+    case GLFW_KEY_C: return Key::C;
     default: return std::nullopt;
     }
 }
@@ -143,7 +144,7 @@ WindowInput GlfwWindowContext::takeInput()
     for (int button = 0; button < kMouseButtonCount; ++button)
         input_.down[button] = input.down[button];
     const int glfwKeys[kKeyCount] = {GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D,
-                                     GLFW_KEY_Q, GLFW_KEY_E, GLFW_KEY_R, GLFW_KEY_TAB};
+                                     GLFW_KEY_Q, GLFW_KEY_E, GLFW_KEY_R, GLFW_KEY_TAB, GLFW_KEY_C};
     for (int key = 0; key < kKeyCount; ++key)
         input.keyHeld[key] = glfwGetKey(window_, glfwKeys[key]) == GLFW_PRESS;
     input.shiftHeld = glfwGetKey(window_, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||

@@ -10,8 +10,8 @@ enum class MouseButton { Left, Right, Middle };
 constexpr int kMouseButtonCount = 3;
 
 // The keys the window answers to (Escape closes it by itself).
-enum class Key { W, A, S, D, Q, E, R, Tab };
-constexpr int kKeyCount = 8;
+enum class Key { W, A, S, D, Q, E, R, Tab, C };
+constexpr int kKeyCount = 9;
 
 struct KeyPress {
     Key key;

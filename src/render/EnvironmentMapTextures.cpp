@@ -28,17 +28,12 @@ EnvironmentMapTextures uploadEnvironmentMap(const EnvironmentMap& map)
     textures.radiance.bind(EnvironmentMapTextures::kRadianceUnit);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, map.width, map.height, 0, GL_RGBA, GL_FLOAT,
                  map.texels.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    textures.radiance.setSampling(GL_LINEAR, GL_LINEAR, GL_REPEAT, GL_CLAMP_TO_EDGE);
     textures.distribution.bind(EnvironmentMapTextures::kDistributionUnit);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, map.cumulativeWidth(), map.height + 1, 0, GL_RED,
                  GL_FLOAT, map.cumulative.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    textures.distribution.setSampling(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE,
+                                      GL_CLAMP_TO_EDGE);
     gl::throwOnGlError("uploading the environment map");
     return textures;
 }

@@ -164,4 +164,96 @@ SceneBounds computeSceneBounds(const Scene& scene)
     return bounds;
 }
 
+namespace {
+
+void addObjectBounds(const Shape& shape, const Transform& placement, ObjectBounds& bounds)
+{
+    if (const auto* polyhedron = std::get_if<Polyhedron>(&shape.geometry)) {
+        std::vector<glm::vec4> planes;
+        for (const glm::vec4& plane : polyhedron->planes) {
+            const float length = glm::length(glm::vec3(plane));
+            if (length > 0.0f)
+                planes.push_back(applyTransformToPlane(placement, plane / length));
+        }
+        if (!planes.empty())
+            bounds.halfSpaceUnions.push_back(std::move(planes));
+        return;
+    }
+    if (const auto* node = std::get_if<CsgNode>(&shape.geometry)) {
+        const CsgCombination combination = describe(node->op).combination;
+        const ShapeBound whole = boundShape(Shape{shape.geometry, placement});
+        if (combination != CsgCombination::Union && whole.finite) {
+            bounds.spheres.push_back(whole);
+            return;
+        }
+        // A union is its children; an intersection or a difference lies inside its first.
+        // Smooth operators may push the surface out by their margin: a bound that is a
+        // sphere carries it, exact half-spaces do not (too small to matter to the camera).
+        for (const Shape& child : node->children) {
+            addObjectBounds(child, compose(placement, child.transform.value_or(Transform{})),
+                            bounds);
+            if (combination != CsgCombination::Union)
+                break;
+        }
+        return;
+    }
+    const ShapeBound bound = boundShape(Shape{shape.geometry, placement});
+    if (bound.finite)
+        bounds.spheres.push_back(bound);
+}
+
+}  // namespace
+
+ObjectBounds objectBounds(const Scene& scene)
+{
+    ObjectBounds bounds;
+    for (const SceneObject& object : scene.objects)
+        addObjectBounds(object.shape, object.shape.transform.value_or(Transform{}), bounds);
+    return bounds;
+}
+
+std::optional<float> nearestBoundHit(const ObjectBounds& bounds, const glm::vec3& origin,
+                                     const glm::vec3& direction)
+{
+    std::optional<float> nearest;
+    auto consider = [&](float distance) {
+        if (!nearest || distance < *nearest)
+            nearest = distance;
+    };
+    for (const ShapeBound& sphere : bounds.spheres) {
+        const glm::vec3 offset = origin - sphere.center;
+        const float c = glm::dot(offset, offset) - sphere.radius * sphere.radius;
+        if (c <= 1e-4f * sphere.radius * sphere.radius)
+            continue;  // the origin is in it (or on it)
+        const float b = glm::dot(offset, direction);
+        const float discriminant = b * b - c;
+        if (b >= 0.0f || discriminant < 0.0f)
+            continue;
+        consider(-b - std::sqrt(discriminant));
+    }
+    for (const std::vector<glm::vec4>& planes : bounds.halfSpaceUnions) {
+        // The union is entered where the ray first enters one of its half-spaces, unless
+        // the origin is in one already.
+        bool inside = false;
+        std::optional<float> entry;
+        for (const glm::vec4& plane : planes) {
+            const float height = glm::dot(glm::vec3(plane), origin) + plane.w;
+            const float tolerance = 1e-5f * std::max(1.0f, std::abs(plane.w));
+            if (height <= tolerance) {
+                inside = true;
+                break;
+            }
+            const float approach = glm::dot(glm::vec3(plane), direction);
+            if (approach < 0.0f) {
+                const float distance = height / -approach;
+                if (!entry || distance < *entry)
+                    entry = distance;
+            }
+        }
+        if (!inside && entry)
+            consider(*entry);
+    }
+    return nearest;
+}
+
 }  // namespace scene

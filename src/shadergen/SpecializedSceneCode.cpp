@@ -114,7 +114,7 @@ std::string specializedSceneFunctions(const ScenePlan& plan, const std::string& 
            "                           float toleranceGrowth)\n{\n"
            "    if (!gRayCulling || !(toleranceGrowth < kMaxCullableToleranceGrowth))\n"
            "        return noRayCulling();\n"
-           "    RayCulling culling = RayCulling(0u, 0.0);\n";
+           "    RayCulling culling = RayCulling(0u, 0.0, FLOAT_MAX);\n";
     for (const std::vector<const ObjectPlan*>* objects : {&cheap, &bounded})
         for (const ObjectPlan* object : *objects)
             if (object->culling)
@@ -123,7 +123,8 @@ std::string specializedSceneFunctions(const ScenePlan& plan, const std::string& 
                     << ", origin, direction, tolerance0, toleranceGrowth);\n";
     if (!plan.everyObjectCulled)
         out << "    // Some objects have no bound to cull by: the ray may meet them anywhere.\n"
-               "    culling.escapeDistance = FLOAT_MAX;\n";
+               "    culling.escapeDistance = FLOAT_MAX;\n"
+               "    culling.entryDistance = 0.0;\n";
     out << "    return culling;\n}\n";
     return out.str();
 }

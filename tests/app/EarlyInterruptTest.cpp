@@ -1,5 +1,5 @@
-// An interrupt at any moment of a run, from the very start, ends it as documented (README.md,
-// "Using it"): status 130, the summary line saying it was interrupted, and no file lost. The
+// An interrupt at any moment of a run, from the very start, ends it as documented (docs/USAGE.md,
+// "Rendering from the command line"): status 130, the summary line saying it was interrupted, and no file lost. The
 // program's libraries take half a second or more to load before its first instruction runs;
 // a signal then used to kill it unseen (app/Launcher.cpp).
 #include "app/ProgramInFolder.h"

@@ -1,7 +1,8 @@
 // The option table (settings/Options.def) walked row by row: every option is in --help with
 // the default the struct holds, every recorded setting comes back from a file's metadata as
 // it went in, every setting the shader reads is declared in the shader and read by the
-// module named for it, and README.md names no option the program does not have.
+// module named for it, and README.md and docs/USAGE.md name no option the program does not
+// have.
 #include "app/CommandLine.h"
 #include "film/RenderMetadata.h"
 #include "render/ScenePreparation.h"
@@ -224,9 +225,9 @@ TEST(OptionsTable, NoModuleDeclaresAGeneratedUniformOrCopyOfItsOwn)
     }
 }
 
-TEST(OptionsTable, ReadmeNamesOnlyOptionsTheProgramHas)
+TEST(OptionsTable, UserDocsNameOnlyOptionsTheProgramHas)
 {
-    // merge's own, and other programs' options the README quotes (valgrind's).
+    // merge's own, and other programs' options the docs quote (valgrind's).
     std::set<std::string> known = {"--png", "--trace-children"};
     std::istringstream help(app::usageText());
     const std::regex flag("--[a-z][a-z-]*");
@@ -234,12 +235,14 @@ TEST(OptionsTable, ReadmeNamesOnlyOptionsTheProgramHas)
         for (auto it = std::sregex_iterator(line.begin(), line.end(), flag);
              it != std::sregex_iterator(); ++it)
             known.insert(it->str());
-    const std::string readme = fileText(kSourceDirectory / "README.md");
-    const std::regex option("`(--[a-z][a-z-]*)");
-    for (auto it = std::sregex_iterator(readme.begin(), readme.end(), option);
-         it != std::sregex_iterator(); ++it)
-        EXPECT_TRUE(known.count((*it)[1].str()) != 0)
-            << "README.md names " << (*it)[1].str() << ", which --help does not list";
+    for (const char* document : {"README.md", "docs/USAGE.md"}) {
+        const std::string text = fileText(kSourceDirectory / document);
+        const std::regex option("`(--[a-z][a-z-]*)");
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), option);
+             it != std::sregex_iterator(); ++it)
+            EXPECT_TRUE(known.count((*it)[1].str()) != 0)
+                << document << " names " << (*it)[1].str() << ", which --help does not list";
+    }
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Files from elsewhere are untrusted (README.md, "Files from elsewhere"): merge, --resume and
+// Files from elsewhere are untrusted (docs/USAGE.md, "Files from elsewhere"): merge, --resume and
 // info refuse, in one line and writing nothing, each kind of file issue 35 found them to
 // accept (made from a render of the program by support/CraftedRenderFiles.cpp), and files that
 // are not regular files at all, without waiting on them.

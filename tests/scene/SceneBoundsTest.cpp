@@ -135,5 +135,37 @@ TEST(ShapeBounds, SmoothUnionGrowsByTheBlendMargin)
     EXPECT_NEAR(smooth.radius - sharp.radius, std::log(2.0f) / 4.0f, 1e-5f);
 }
 
+TEST(NearestBoundHit, MeetsSpheresAndWallsFromOutsideAndPassesThoseTheOriginIsIn)
+{
+    // A ball at z = -10 before a wall z <= -20, and a floor y <= -1.
+    const Scene scene = parse(sceneWithObjects(
+        3, "0 0 sphere 0 0 -10 2\n0 0 polyhedron 1 0 0 1 20\n0 0 polyhedron 1 0 1 0 1\n"));
+    const ObjectBounds bounds = objectBounds(scene);
+    ASSERT_EQ(bounds.spheres.size(), 1u);
+    ASSERT_EQ(bounds.halfSpaceUnions.size(), 2u);
+    const glm::vec3 back(0.0f, 0.0f, -1.0f);
+    EXPECT_NEAR(nearestBoundHit(bounds, {0, 0, 0}, back).value_or(-1.0f), 8.0f, 1e-4f);
+    // Beside the ball: the wall behind it.
+    EXPECT_NEAR(nearestBoundHit(bounds, {5, 0, 0}, back).value_or(-1.0f), 20.0f, 1e-4f);
+    // Down: the floor, one unit below.
+    EXPECT_NEAR(nearestBoundHit(bounds, {5, 0, 0}, {0, -1, 0}).value_or(-1.0f), 1.0f, 1e-4f);
+    // From the ball's centre, and from the floor upwards: nothing in the way.
+    EXPECT_FALSE(nearestBoundHit(bounds, {0, 0, -10}, {0, 1, 0}).has_value());
+    EXPECT_FALSE(nearestBoundHit(bounds, {5, -1, 0}, {0, 1, 0}).has_value());
+    // Away from everything.
+    EXPECT_FALSE(nearestBoundHit(bounds, {0, 0, 0}, {0, 0, 1}).has_value());
+}
+
+TEST(NearestBoundHit, FollowsTransformsAndCsgOperands)
+{
+    // A union of two balls, moved 10 along x by a transform.
+    const Scene scene = parse(sceneWithObjects(
+        1, "0 0 translate 10 0 0 union { sphere 0 0 -5 1  sphere 0 0 -9 1 }\n"));
+    const ObjectBounds bounds = objectBounds(scene);
+    EXPECT_EQ(bounds.spheres.size(), 2u) << "a union is its children";
+    EXPECT_NEAR(nearestBoundHit(bounds, {10, 0, 0}, {0, 0, -1}).value_or(-1.0f), 4.0f, 1e-4f);
+    EXPECT_FALSE(nearestBoundHit(bounds, {0, 0, 0}, {0, 0, -1}).has_value());
+}
+
 }  // namespace
 }  // namespace scene_tests

@@ -1,5 +1,6 @@
 // Every error the scene format lists: a scene::SceneError whose message names the file, the
 // line, the token read and what was expected; nothing is returned half-read.
+#include "scene/CameraLine.h"
 #include "scene/SceneTestSupport.h"
 
 namespace scene_tests {
@@ -263,6 +264,19 @@ TEST(CameraText, ReadsTheFilesCameraLineWithOrWithoutItsWords)
     EXPECT_EQ(worded.target, bare.target);
     ASSERT_TRUE(worded.lens.has_value());
     EXPECT_EQ(worded.lens->focusDistance, 5.0f);
+}
+
+// What the window's C key writes (scene::cameraLine) is what --camera reads back, exactly.
+TEST(CameraText, ReadsTheWindowsCameraLineBackExactly)
+{
+    scene::Camera camera;
+    camera.eye = {1.1f, -8.4f, 4.44f};
+    camera.target = {1.0f / 3.0f, 10.0f, -2.0f};
+    camera.up = {0.0f, 0.0f, 1.0f};
+    camera.verticalFieldOfViewDegrees = 35.5f;
+    camera.lens = scene::ThinLens{0.05f, 14.0f};
+    const scene::Camera read = scene::parseCameraText(scene::cameraLine(camera), "--camera");
+    EXPECT_TRUE(scene::sameCamera(read, camera)) << scene::cameraLine(read);
 }
 
 TEST(CameraText, AnErrorNamesTheSourceAndTheToken)

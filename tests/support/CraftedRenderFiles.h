@@ -1,6 +1,6 @@
 #pragma once
 // Render files made wrong on purpose, from a good one: the ways a file from elsewhere can be
-// wrong that the program must refuse (README.md, "Files from elsewhere"; issue 35 found each
+// wrong that the program must refuse (docs/USAGE.md, "Files from elsewhere"; issue 35 found each
 // of them accepted). The tests of merge, --resume and info, and the EXR fuzz target's
 // regression inputs (tests/fuzz/render-file-findings/, written by make_render_file_findings),
 // all come from this one list.

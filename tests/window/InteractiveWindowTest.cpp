@@ -4,6 +4,11 @@
 // it writes there, and edits that scene as a user would (a new file renamed over the old,
 // as editors save).
 #include "io/ImageFile.h"
+#include "scene/FileLookup.h"
+#include "scene/SceneBounds.h"
+#include "scene/SceneParser.h"
+
+#include <glm/glm.hpp>
 #include "support/ChildProcess.h"
 #include "window/WindowDriver.h"
 
@@ -12,6 +17,10 @@
 #include <cstdlib>
 #include <fstream>
 #include <future>
+#include <iostream>
+#include <iterator>
+#include <optional>
+#include <sstream>
 #include <thread>
 #include <unistd.h>
 
@@ -45,6 +54,12 @@ std::string sceneText(const std::string& colour, const std::string& extraObjects
 }
 
 const char* const kRed = "0.8 0.1 0.1";
+
+std::string readText(const fs::path& path)
+{
+    std::ifstream file(path);
+    return std::string(std::istreambuf_iterator<char>(file), {});
+}
 const char* const kBlue = "0.1 0.1 0.8";
 
 class InteractiveWindow : public ::testing::Test {
@@ -181,6 +196,34 @@ protected:
             return result;
         }
         return program_.get();
+    }
+
+    static fs::path scene1Path()
+    {
+        return fs::path(RAYTRACER_SOURCE_DIR) / "scenes" / "scene1.in";
+    }
+
+    static scene::Scene readScene1()
+    {
+        return scene::parseSceneFile(scene1Path());
+    }
+
+    // Presses C and reads back the camera it writes to scene.camera (scene1's objects after
+    // it); none, with a failure, where the window does not say it wrote it.
+    std::optional<scene::Camera> writtenCamera()
+    {
+        pressKey(window_, "c");
+        const std::string written = waitForTitleWith("camera line");
+        if (written.find("scene.camera") == std::string::npos) {
+            ADD_FAILURE() << "C must write the camera to scene.camera: " << written;
+            return std::nullopt;
+        }
+        const std::string scene1Text = readText(scene1Path());
+        // scene1's text after its camera (its field of view, 35, ends it).
+        return scene::parseSceneText(readText(folder_ / "scene.camera") + "\n" +
+                                         scene1Text.substr(scene1Text.find("35\n") + 3),
+                                     "written.in", scene::FileLookup::forScene(scene1Path()))
+            .camera;
     }
 
     bool running() const
@@ -374,6 +417,127 @@ TEST_F(InteractiveWindow, ResizingRendersAtTheNewSize)
     EXPECT_NE(resized.find("200x100"), std::string::npos)
         << "the image is rendered at the window's new size, so its aspect stays right: "
         << resized;
+}
+
+// How deep `point` lies in the scene's polyhedra (its walls, floor and ceiling): the most of
+// any plane's distance into a solid, 0 when outside every one.
+float depthInWalls(const scene::Scene& scene, const glm::vec3& point)
+{
+    float deepest = 0.0f;
+    for (const scene::SceneObject& object : scene.objects)
+        if (const auto* polyhedron = std::get_if<scene::Polyhedron>(&object.shape.geometry))
+            for (const glm::vec4& plane : polyhedron->planes)
+                deepest = std::max(deepest, -(glm::dot(glm::vec3(plane), point) + plane.w) /
+                                                glm::length(glm::vec3(plane)));
+    return deepest;
+}
+
+// scene1's look-at point lies behind its back wall: an orbit about it took the eye into a
+// wall. A quarter turn must keep the eye in the room (the camera the C key writes, read
+// back), and the picture about as bright.
+TEST_F(InteractiveWindow, AQuarterTurnOrbitInScene1KeepsThePicture)
+{
+    writeScene(readText(scene1Path()));
+    start();
+    ASSERT_GE(samplesInTitle(waitForSamples(4, 40.0)), 4) << windowTitle(window_);
+    const ChannelMeans before = meanColour(captureWindow(window_));
+    const std::string titleBefore = windowTitle(window_);
+    // A drag half the window's height (120 pixels) to the right: a quarter of a turn.
+    drag(window_, 1, 50, 60, 60, 0, 6);
+    const std::string moved = waitForRestartAfter(titleBefore);
+    ASSERT_TRUE(showsRestart(titleBefore, moved)) << "the drag did not move the camera: " << moved;
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    ASSERT_GE(samplesInTitle(waitForSamples(4, 40.0)), 4) << windowTitle(window_);
+    const ChannelMeans after = meanColour(captureWindow(window_));
+    const double brightnessBefore = before.red + before.green + before.blue;
+    const double brightnessAfter = after.red + after.green + after.blue;
+    std::cout << "mean brightness before the orbit " << brightnessBefore << ", after "
+              << brightnessAfter << std::endl;
+    EXPECT_GT(brightnessAfter, 0.5 * brightnessBefore)
+        << "the picture's mean fell from " << brightnessBefore << " to " << brightnessAfter;
+    EXPECT_LT(brightnessAfter, 2.0 * brightnessBefore)
+        << "the picture's mean rose from " << brightnessBefore << " to " << brightnessAfter;
+
+    const std::optional<scene::Camera> camera = writtenCamera();
+    ASSERT_TRUE(camera.has_value());
+    const std::string cameraText = readText(folder_ / "scene.camera");
+    // Its eye must be in the room.
+    const scene::Scene original = readScene1();
+    EXPECT_EQ(depthInWalls(original, camera->eye), 0.0f)
+        << "the eye went into a wall: " << cameraText;
+    const scene::SceneBounds bounds = scene::computeSceneBounds(original);
+    EXPECT_LE(glm::length(camera->eye - bounds.center), bounds.radius)
+        << "the eye left the scene: " << cameraText;
+
+    // The summary gives the accumulation on screen (restarted by the drag) and, apart, the
+    // time the window was open.
+    const ProcessResult result = close();
+    const std::string& out = result.standardOutput;
+    const std::size_t in = out.find(" spp in ");
+    const std::size_t open = out.find("window open ");
+    ASSERT_TRUE(in != std::string::npos && open != std::string::npos) << out;
+    const double accumulationSeconds = std::stod(out.substr(in + 8));
+    const double windowSeconds = std::stod(out.substr(open + 12));
+    EXPECT_LT(accumulationSeconds, windowSeconds - 0.1)
+        << "the accumulation restarted after the drag, 0.15 s after it at the earliest: " << out;
+}
+
+// Ten wheel steps towards the view's centre in scene1: the eye comes near the front sphere
+// under it (the pivot) and never passes it; the look-at point, behind the back wall, is not
+// what it dollies towards.
+TEST_F(InteractiveWindow, TenWheelStepsInScene1NeverPassThePivot)
+{
+    writeScene(readText(scene1Path()));
+    start();
+    ASSERT_GE(samplesInTitle(waitForSamples(2, 40.0)), 2) << windowTitle(window_);
+    for (int step = 0; step < 10; ++step) {
+        xdotool({"mousemove", "--window", std::to_string(window_), "80", "60"});
+        xdotool({"click", "--window", std::to_string(window_), "4"});
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    const std::optional<scene::Camera> camera = writtenCamera();
+    ASSERT_TRUE(camera.has_value());
+    // Where the file's view centre meets the front sphere (centre (1 0 1), radius 1).
+    const scene::Camera home = readScene1().camera;
+    const glm::vec3 forward = glm::normalize(home.target - home.eye);
+    const glm::vec3 offset = home.eye - glm::vec3(1.0f, 0.0f, 1.0f);
+    const float b = glm::dot(offset, forward);
+    const glm::vec3 pivot =
+        home.eye + (-b - std::sqrt(b * b - glm::dot(offset, offset) + 1.0f)) * forward;
+    const float startDistance = glm::length(pivot - home.eye);
+    const float left = glm::dot(pivot - camera->eye, forward);
+    EXPECT_GT(left, 0.0f) << "the eye passed the front sphere's surface by " << -left;
+    EXPECT_LT(left, 0.5f * startDistance) << "ten steps should have come much nearer";
+    EXPECT_GT(glm::length(camera->eye - glm::vec3(1.0f, 0.0f, 1.0f)), 1.0f)
+        << "the eye is in the front sphere";
+}
+
+// C writes the camera as a scene file's camera line, to the terminal and to scene.camera.
+TEST_F(InteractiveWindow, CWritesTheCameraAsASceneFileLine)
+{
+    writeScene(sceneText(kRed));
+    start();
+    ASSERT_GE(samplesInTitle(waitForSamples(2)), 2);
+    drag(window_, 1, 80, 60, 30, 0);
+    pressKey(window_, "c");
+    const std::string written = waitForTitleWith("camera line");
+    ASSERT_NE(written.find("scene.camera"), std::string::npos) << written;
+    std::ifstream file(folder_ / "scene.camera");
+    std::string comment;
+    std::string line;
+    std::getline(file, comment);
+    std::getline(file, line);
+    EXPECT_EQ(comment.rfind("# ", 0), 0u) << comment;
+    std::istringstream numbers(line);
+    int count = 0;
+    for (double value = 0.0; numbers >> value;)
+        ++count;
+    EXPECT_EQ(count, 10) << "eye, look-at point, up and field of view: " << line;
+    EXPECT_NE(line.find("  45"), std::string::npos) << "the field of view is kept: " << line;
+    const ProcessResult result = close();
+    EXPECT_NE(result.standardOutput.find(line + "\n"), std::string::npos)
+        << "the terminal shows the line on its own: " << result.standardOutput;
 }
 
 TEST_F(InteractiveWindow, ClosingBeforeTheSamplesAskedForIsAnInterruptedRender)
