@@ -99,10 +99,12 @@ trap 'rm -rf "$work"' EXIT
 declare -A rate last
 measure() {  # scene kernel -> appends the Mpaths/s of one render to rate[scene,kernel]
   local scene="$1" kernel="$2" line
+  rm -f "$work/summary.json"
   line="$(env -u DISPLAY -u WAYLAND_DISPLAY "$raytracer" "$root/scenes/$scene.in" "$width" "$height" \
           30 --spp "$spp" --gl egl "${device[@]}" --kernel "$kernel" --quiet \
-          --output "$work/$scene-$kernel.exr" 2>&1 | tail -1)"
-  local mpaths; mpaths="$(echo "$line" | grep -o '[0-9.]* Mpaths/s' | head -1 | cut -d' ' -f1)"
+          --summary-json "$work/summary.json" --output "$work/$scene-$kernel.exr" 2>&1 | tail -1)"
+  local mpaths
+  mpaths="$(sed -n 's/^  "megapathsPerSecond": \([0-9.e+-]*\),$/\1/p' "$work/summary.json" 2>/dev/null || true)"
   last[$kernel]=""
   [ -n "$mpaths" ] || { echo "  $scene $kernel: FAILED: $line"; return 0; }
   rate[$scene,$kernel]="${rate[$scene,$kernel]:-} $mpaths"

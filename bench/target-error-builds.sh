@@ -40,9 +40,9 @@ for scene in "${scenes[@]}"; do
   for seed in 1 2; do
     for i in "${!programs[@]}"; do
       (cd "$(dirname "$scene")" &&
-        "${programs[$i]}" "$(basename "$scene")" "$width" "$height" "$limit" --headless --quiet \
+        "${programs[$i]}" "$(basename "$scene")" "$width" "$height" "$limit" --headless \
           --target-error "$target" --seed "$seed" --output "$work/$name-$i-$seed.pfm") \
-        > "$work/$name-$i-$seed.log" 2>&1
+        > "$work/$name-$i-$seed.log" 2>&1 || [ $? -eq 3 ]  # 3: the limit came first
     done
   done
 done

@@ -98,8 +98,9 @@ seconds() {
     shift 2
     (cd "$(dirname "$scene")" &&
         RAYTRACER_DATA_DIR="$data" "$raytracer" "$(basename "$scene")" "$width" "$height" \
-            --spp "$spp" --quiet --headless --output "$work/render.exr" "$@") |
-        sed -n 's/.* spp in \([0-9.]*\) s:.*/\1/p'
+            --spp "$spp" --quiet --headless --summary-json "$work/summary.json" \
+            --output "$work/render.exr" "$@")
+    sed -n 's/^  "seconds": \([0-9.e+-]*\),$/\1/p' "$work/summary.json"
 }
 
 echo "machine: $(lscpu | sed -n 's/^Model name: *//p' | head -1), $(nproc) cores; date: $(date -u '+%F %H:%M UTC')"

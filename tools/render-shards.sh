@@ -93,7 +93,7 @@ start=$(date +%s.%N)
 if ! parallel --will-cite --halt now,fail=1 --jobs "$jobs" --link -q --line-buffer \
         --tagstring "shard {1}:" \
         "${export_threads[@]}" "$raytracer" "$scene" "$width" "$height" --spp "{2}" --seed "{1}" \
-        "${device[@]}" --quiet --output "$shard_dir/shard-{1}.exr" "${extra[@]}" \
+        "${device[@]}" --output "$shard_dir/shard-{1}.exr" "${extra[@]}" \
         ::: "${seeds[@]}" ::: "${counts[@]}"; then
     fail "a shard failed or was interrupted: nothing merged; the shards are in $shard_dir"
 fi

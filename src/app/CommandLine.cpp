@@ -1,6 +1,9 @@
 #include "app/CommandLine.h"
 
 #include "io/ImageFormats.h"
+#include "scene/SceneError.h"
+#include "scene/SceneParser.h"
+#include "scene/Spelling.h"
 #include "settings/SettingsTable.h"
 
 #include <algorithm>
@@ -65,6 +68,15 @@ std::string outputFormatsHelp()
         text += "\n" + names + format.holds;
     }
     return text;
+}
+
+// What was wrong in --camera's text, without the file and line a scene's error starts with:
+// "read 'x', expected camera up vector".
+std::string cameraErrorText(const scene::SceneError& error)
+{
+    return (error.token().empty() ? "reached its end"
+                                  : "read '" + scene::shownToken(error.token()) + "'") +
+           ", expected " + error.expected();
 }
 
 // A row of the command line's table: a heading of --help, an option of the program's own
@@ -159,38 +171,18 @@ const std::vector<Entry>& infoEntries()
     return entries;
 }
 
-// The number of single-character insertions, deletions and substitutions that turn one
-// word into the other (Levenshtein).
-std::size_t editDistance(const std::string& a, const std::string& b)
-{
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j)
-        row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-            diagonal = above;
-        }
-    }
-    return row[b.size()];
-}
-
 // " (did you mean --hit-tolerance?)" for the option nearest to `word`, within two edits.
 std::string nearestOptionHint(const std::string& word, const std::vector<Entry>& entries)
 {
-    constexpr std::size_t kMostEdits = 2;
     std::string nearest;
-    std::size_t nearestDistance = kMostEdits + 1;
+    std::size_t nearestDistance = scene::kMostEditsSuggested + 1;
     for (const Entry& entry : entries) {
         if (!entry.isOption())
             continue;
         std::vector<std::string> spellings = entry.description().aliases;
         spellings.push_back(entry.description().flag);
         for (const std::string& spelling : spellings) {
-            const std::size_t distance = editDistance(word, spelling);
+            const std::size_t distance = scene::editDistance(word, spelling);
             if (distance < nearestDistance) {
                 nearest = entry.description().flag;
                 nearestDistance = distance;
@@ -362,6 +354,21 @@ CommandLine parseCommandLine(int argc, const char* const argv[])
     if (line.gl == platform::ContextKind::Window && line.resume)
         throw UsageError("--resume renders headless: it does not go with --gl window");
     readPositional(positional, line);
+    if (line.crop) {
+        if (line.crop->x1 > line.width || line.crop->y1 > line.height)
+            throw UsageError("--crop " + film::formatCrop(*line.crop) + " reaches beyond the " +
+                             std::to_string(line.width) + "x" + std::to_string(line.height) +
+                             " frame: X1 and Y1 are at most its width and height");
+        if (line.targetError)
+            throw UsageError("--crop does not go with --target-error (whose error is the "
+                             "whole frame's): give --spp N or SECONDS");
+        if (line.resume)
+            throw UsageError("--crop does not go with --resume: render the crop anew");
+        if (line.action == Action::Render && !line.isBatch())
+            throw UsageError("--crop renders headless: give SECONDS or --spp");
+        if (line.gl == platform::ContextKind::Window)
+            throw UsageError("--crop renders headless: it does not go with --gl window");
+    }
     if (line.resume && line.action == Action::Render && !line.isBatch())
         throw UsageError("--resume goes on to an end: give --spp N (samples per pixel in all), "
                          "--target-error E or SECONDS (more)");
@@ -489,6 +496,10 @@ moments, so that renders can be merged and resumed (docs/SCALE_OUT.md):
   info                  prints what a file says of itself
   denoise               writes IN.exr (a render or merge with feature buffers) denoised by
                         Open Image Denoise into OUT (docs/DENOISING.md)
+
+Exit status: 0 done; 1 the scene, a file or the OpenGL failed (or, with --strict, a warning);
+2 the command line cannot be run; 3 a render to --target-error ended at SECONDS or --spp
+before reaching it (its image is written); 130 interrupted (the image so far is written).
 )" + optionsHelp();
 }
 

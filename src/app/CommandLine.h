@@ -1,6 +1,8 @@
 #pragma once
 #include "film/AdaptiveSampling.h"
+#include "film/RenderMetadata.h"
 #include "platform/ContextFactory.h"
+#include "scene/Scene.h"
 #include "settings/OptionDescription.h"
 #include "settings/RenderSettings.h"
 
@@ -53,7 +55,15 @@ struct CommandLine {
     // other (it implies --gl gpu).
     platform::ContextKind gl = platform::ContextKind::Automatic;
     std::optional<int> glDevice;
+    // --quiet: nothing on standard output; --summary-json FILE: the summary as JSON too.
     bool quiet = false;
+    std::optional<std::filesystem::path> summaryJson;
+    // --strict: a warning (a scene that can emit no light) is an error.
+    bool strict = false;
+    // --camera: replaces the scene file's camera once the scene is read.
+    std::optional<scene::Camera> camera;
+    // --crop: the pixels traced, of WIDTH x HEIGHT.
+    std::optional<film::PixelCrop> crop;
     settings::RenderSettings settings;
     // WIDTH HEIGHT were given (a resumed render takes the file's otherwise).
     bool sizeGiven = false;

@@ -42,8 +42,7 @@ io::Image denoisedRadiance(const film::Accumulation& accumulation)
 }
 
 io::OutputImage denoisedOutput(const fs::path& path, const io::Image& denoised,
-                               const film::RenderMetadata& metadata, const fs::path& rawFile,
-                               float exposure)
+                               const film::RenderMetadata& metadata, const fs::path& rawFile)
 {
     std::vector<io::ImageAttribute> attributes = film::metadataAttributes(metadata);
     attributes.push_back({"raytracer:denoised",
@@ -53,10 +52,15 @@ io::OutputImage denoisedOutput(const fs::path& path, const io::Image& denoised,
                               ": biased, not to be merged or resumed"});
     if (io::holdsLinearRadiance(path))
         return {path, denoised, std::move(attributes), {}};
+    // The exposure and curve the render records (the same as its raw picture's).
     io::Image picture(denoised.width, denoised.height, 3);
-    for (std::size_t i = 0; i < picture.pixels.size(); ++i)
-        picture.pixels[i] =
-            static_cast<float>(film::displayValue(denoised.pixels[i], exposure));
+    for (std::size_t i = 0; i + 2 < picture.pixels.size(); i += 3) {
+        const film::Rgb shown = film::displayColour(
+            {denoised.pixels[i], denoised.pixels[i + 1], denoised.pixels[i + 2]},
+            metadata.settings.exposure, metadata.settings.toneCurve);
+        for (std::size_t channel = 0; channel < 3; ++channel)
+            picture.pixels[i + channel] = static_cast<float>(shown[channel]);
+    }
     return {path, std::move(picture), std::move(attributes), {}};
 }
 
@@ -73,8 +77,8 @@ int runDenoise(const DenoiseRequest& request)
     const io::Image denoised = denoisedRadiance(render.accumulation);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    io::writeAllOrNothing({denoisedOutput(request.output, denoised, render.metadata,
-                                          request.input, film::ToneCurve::kDefaultExposure)});
+    io::writeAllOrNothing(
+        {denoisedOutput(request.output, denoised, render.metadata, request.input)});
     char line[256];
     std::snprintf(line, sizeof line, "denoised %s (%dx%d, %lld spp) in %.2f s -> ",
                   request.input.string().c_str(), render.metadata.width, render.metadata.height,

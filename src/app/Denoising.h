@@ -22,11 +22,11 @@ std::filesystem::path denoisedPath(const std::filesystem::path& output);
 io::Image denoisedRadiance(const film::Accumulation& accumulation);
 
 // `denoised` written to `path`: linear radiance (R, G, B) in an .exr, .pfm or .hdr, the
-// picture tone-mapped at `exposure` otherwise; with `metadata` and a raytracer:denoised
+// picture tone-mapped at the exposure and by the curve `metadata` records otherwise; with `metadata` and a raytracer:denoised
 // attribute naming the library and `rawFile`, the image it was denoised from.
 io::OutputImage denoisedOutput(const std::filesystem::path& path, const io::Image& denoised,
                                const film::RenderMetadata& metadata,
-                               const std::filesystem::path& rawFile, float exposure);
+                               const std::filesystem::path& rawFile);
 
 // raytracer denoise IN.exr OUT; returns the exit status.
 int runDenoise(const DenoiseRequest& request);

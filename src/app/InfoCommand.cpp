@@ -80,6 +80,8 @@ int runInfo(const std::filesystem::path& path)
     printLine("scene", metadata->sceneFile);
     printLine("scene SHA-256", metadata->sceneSha256);
     printLine("camera", film::formatCamera(metadata->camera));
+    if (metadata->crop)
+        printLine("crop", film::formatCrop(*metadata->crop) + " (only these pixels traced)");
     std::string samples = std::to_string(metadata->samplesPerPixel) + " per pixel";
     const std::string pixels = perPixelSamples(file);
     if (!pixels.empty())

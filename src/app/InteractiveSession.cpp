@@ -71,6 +71,7 @@ InteractiveSession::InteractiveSession(platform::GlfwWindowContext& window,
     watcher_.watch(filesOfScene(line.scene, scene));
     sceneSha256_ = app::sceneSha256(filesOfScene(line.scene, scene));
     panelSettings_.exposure = renderer.exposure();
+    panelSettings_.toneCurve = renderer.settings().toneCurve;
     panelSettings_.hitTolerance = renderer.settings().hitTolerance;
     panelSettings_.maxBounces = renderer.settings().maxBounces;
     panelSettings_.environment = renderer.settings().environmentLight;
@@ -268,6 +269,7 @@ bool InteractiveSession::applyPanelSettings(const interaction::PanelSettings& tu
         return false;
     renderer_.setExposure(tuned.exposure);
     renderer_.setPreviewDenoising(tuned.previewDenoiser);
+    renderer_.setToneCurve(tuned.toneCurve);
     const bool viewChanged = tuned.hitTolerance != panelSettings_.hitTolerance ||
                              tuned.maxBounces != panelSettings_.maxBounces ||
                              tuned.environment != panelSettings_.environment;
@@ -305,6 +307,8 @@ bool InteractiveSession::reloadChangedFiles()
     const Clock::time_point start = Clock::now();
     try {
         scene::Scene edited = loadScene(line_.scene);
+        if (line_.camera)
+            edited.camera = *line_.camera;  // --camera stands for the file's camera
         std::string editedSha256 = app::sceneSha256(filesOfScene(line_.scene, edited));
         const Clock::time_point loaded = Clock::now();
         interaction::CameraController camera = camera_;

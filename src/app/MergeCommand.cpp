@@ -9,6 +9,7 @@
 #include "render/ToneMapper.h"
 #include "scene/FileLookup.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <stdexcept>
@@ -48,7 +49,12 @@ void refuseMismatches(const std::vector<fs::path>& paths,
                 ": they differ in " + difference->what + ": " + difference->first + " and " +
                 difference->second + ", so their samples estimate different images");
     for (std::size_t i = 0; i < renders.size(); ++i)
-        for (std::size_t j = i + 1; j < renders.size(); ++j)
+        for (std::size_t j = i + 1; j < renders.size(); ++j) {
+            // Crops that share no pixel share no sample, whatever their seeds.
+            const auto& a = renders[i].metadata.crop;
+            const auto& b = renders[j].metadata.crop;
+            if (a && b && a->disjointFrom(*b))
+                continue;
             if (const auto overlap = film::firstOverlap(renders[i].metadata.sampleRanges,
                                                           renders[j].metadata.sampleRanges))
                 throw std::runtime_error(
@@ -56,7 +62,26 @@ void refuseMismatches(const std::vector<fs::path>& paths,
                     ": both hold samples of seed " + std::to_string(overlap->first.seed) +
                     " with the same indices (" + film::describeSampleRange(overlap->first) +
                     "; " + film::describeSampleRange(overlap->second) +
-                    "), the same paths twice: render shards with different --seed");
+                    "), the same paths twice: render shards with different --seed" +
+                    (a || b ? std::string(", or crops (--crop) that share no pixel") : ""));
+        }
+}
+
+// The rectangle holding every pixel the inputs traced (an input without a crop, the whole
+// frame); nothing where that is the whole frame.
+std::optional<film::PixelCrop> mergedCrop(const std::vector<film::RenderFile>& renders)
+{
+    const film::RenderMetadata& first = renders.front().metadata;
+    const film::PixelCrop frame{0, 0, first.width, first.height};
+    film::PixelCrop bounds = first.crop.value_or(frame);
+    for (const film::RenderFile& render : renders) {
+        const film::PixelCrop crop = render.metadata.crop.value_or(frame);
+        bounds = {std::min(bounds.x0, crop.x0), std::min(bounds.y0, crop.y0),
+                  std::max(bounds.x1, crop.x1), std::max(bounds.y1, crop.y1)};
+    }
+    if (bounds == frame)
+        return std::nullopt;
+    return bounds;
 }
 
 void refuseInexactCounts(const film::Accumulation& merged)
@@ -102,8 +127,10 @@ film::RenderMetadata mergedMetadata(const std::vector<fs::path>& paths,
     return merged;
 }
 
-// The tone-mapped picture, by the renderer's own display pass in a headless context.
-io::Image toneMappedPicture(const film::Accumulation& accumulation)
+// The tone-mapped picture, by the renderer's own display pass in a headless context, at the
+// exposure and by the curve the inputs record (they are one render's: all alike).
+io::Image toneMappedPicture(const film::Accumulation& accumulation,
+                            const settings::RenderSettings& settings)
 {
     platform::ContextRequest request;
     request.headless = true;
@@ -112,7 +139,8 @@ io::Image toneMappedPicture(const film::Accumulation& accumulation)
     const render::ToneMapper toneMapper(scene::FileLookup::dataDirectory() / "shaders");
     const gl::VertexArray triangle;
     return toneMapper.render(targets.previous().estimate, accumulation.width(),
-                             accumulation.height(), triangle);
+                             accumulation.height(), triangle, settings.exposure,
+                             settings.toneCurve);
 }
 
 }  // namespace
@@ -154,7 +182,16 @@ int runMerge(const MergeRequest& request, const InterruptWatch& interrupt)
             break;
         }
     refuseInexactCounts(merged);
-    const film::RenderMetadata metadata = mergedMetadata(request.inputs, renders);
+    film::RenderMetadata metadata = mergedMetadata(request.inputs, renders);
+    // Crops hold their samples in their own pixels, not on top of each other's: what a pixel
+    // of the merge holds is the most of any.
+    const bool anyCrop = std::any_of(renders.begin(), renders.end(), [](const auto& render) {
+        return render.metadata.crop.has_value();
+    });
+    if (anyCrop) {
+        metadata.samplesPerPixel = film::samplesTakenSpan(merged).most;
+        metadata.crop = mergedCrop(renders);
+    }
 
     std::vector<fs::path> images = {request.output};
     if (request.picture)
@@ -165,7 +202,7 @@ int runMerge(const MergeRequest& request, const InterruptWatch& interrupt)
         return kExitInterrupted;
     }
     io::writeAllOrNothing(renderOutputs(images, request.statisticsOutput, merged, metadata,
-                                        [&] { return toneMappedPicture(merged); }));
+                                        [&] { return toneMappedPicture(merged, metadata.settings); }));
 
     char numbers[160];
     std::snprintf(numbers, sizeof numbers, "%dx%d, %lld spp", metadata.width, metadata.height,

@@ -19,12 +19,15 @@
 #include "render/ProgressiveRenderer.h"
 #include "film/RenderFile.h"
 #include "render/ScenePreparation.h"
+#include "scene/Lights.h"
 #include "scene/SceneFeatures.h"
 #include "scene/SceneParser.h"
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -62,6 +65,10 @@ film::RenderFile readResumedRender(CommandLine& line, const scene::Scene& scene,
         throw std::runtime_error(std::string("cannot resume: ") + error.what());
     }
     const film::RenderMetadata& held = resumed.metadata;
+    if (held.crop)
+        throw std::runtime_error("cannot resume " + path.string() + ": it holds the crop " +
+                                 film::formatCrop(*held.crop) + " of its frame only (--crop); "
+                                 "render more of the crop with another --seed and merge");
     if (!line.sizeGiven) {
         line.width = held.width;
         line.height = held.height;
@@ -133,6 +140,7 @@ struct RenderSetup {
     int samplesResumed = 0;  // samples per pixel of the file resumed
     int fewestResumed = 0;   // the fewest any of its pixels holds
     double setupSeconds = 0.0;
+    std::optional<film::PixelCrop> crop;  // --crop
 };
 
 // How the render went: stopped before the end the command line set (its window closed), and
@@ -145,10 +153,11 @@ struct RenderRun {
 
 }  // namespace
 
-void removeStaleTemporariesOf(const std::vector<std::filesystem::path>& outputs)
+void removeStaleTemporariesOf(const std::vector<std::filesystem::path>& outputs, bool quiet)
 {
     for (const io::StaleTemporary& removed : io::removeStaleTemporaries(outputs))
-        std::cout << "removed " << removed.path.string() << ", a temporary file left by process "
+        if (!quiet)
+            std::cout << "removed " << removed.path.string() << ", a temporary file left by process "
                   << removed.processId << ", which no longer runs" << std::endl;
 }
 
@@ -180,10 +189,28 @@ void checkOutputNames(const CommandLine& line)
         throw UsageError("--stats-output " + line.statisticsOutput->string() + " names the same "
                          "file as the image, " + line.outputPath().string() +
                          ": give two different files");
+    if (line.summaryJson &&
+        (io::resolveToSameFile(line.outputPath(), *line.summaryJson) ||
+         (line.statisticsOutput && io::resolveToSameFile(*line.statisticsOutput, *line.summaryJson))))
+        throw UsageError("--summary-json " + line.summaryJson->string() + " names a file the "
+                         "render writes its image or statistics to: give another file");
     if (line.resume && line.statisticsOutput &&
         io::resolveToSameFile(*line.resume, *line.statisticsOutput))
         throw UsageError("--stats-output " + line.statisticsOutput->string() + " names the "
                          "render being resumed: give another file");
+}
+
+// A scene that gives no light renders black: said on standard error before any time is
+// spent, and refused with --strict.
+void warnOfADarkScene(const CommandLine& line, const scene::Scene& scene)
+{
+    if (scene::emitsLight(scene))
+        return;
+    const std::string why = line.scene.string() + " can emit no light (no light that is not "
+                            "black, no emitting sphere, environment none): its image is black";
+    if (line.strict)
+        throw std::runtime_error(why + " (--strict)");
+    std::cerr << "raytracer: warning: " << why << std::endl;
 }
 
 // Loads the scene and the render resumed, checks the outputs can be written, makes the
@@ -194,6 +221,9 @@ RenderSetup prepareRender(CommandLine& line)
     RenderSetup setup;
     // Every texture must be readable before a window opens or a frame is rendered.
     setup.scene = loadScene(line.scene);
+    if (line.camera)
+        setup.scene.camera = *line.camera;
+    warnOfADarkScene(line, setup.scene);
     setup.sceneDigest = sceneSha256(filesOfScene(line.scene, setup.scene));
     if (line.resume)
         setup.resumed = readResumedRender(line, setup.scene, setup.sceneDigest);
@@ -210,12 +240,12 @@ RenderSetup prepareRender(CommandLine& line)
             outputs.push_back(*line.statisticsOutput);
         if (line.denoise)
             outputs.push_back(denoisedPath(line.outputPath()));
-        removeStaleTemporariesOf(outputs);
+        removeStaleTemporariesOf(outputs, line.quiet);
     }
     // A resumed render goes on where the file left it: no window, whose camera and settings
     // could leave that.
     platform::ContextRequest request = contextRequest(line);
-    request.headless = line.headless || line.resume;
+    request.headless = line.headless || line.resume || line.crop;
     if (platform::makesHeadlessContext(request) && !line.isBatch())
         throw UsageError(std::string(line.headless ? "--headless"
                                      : line.gl != platform::ContextKind::Automatic
@@ -238,11 +268,14 @@ RenderSetup prepareRender(CommandLine& line)
     if (line.targetError)
         setup.errorTarget.emplace(line.adaptiveSampling,
                                   !line.uniformSampling && !setup.context->hasWindow());
+    if (line.crop)
+        setup.renderer->setCrop(line.crop->x0, line.crop->y0, line.crop->x1, line.crop->y1);
     if (setup.resumed) {
         setup.renderer->resumeFrom(setup.resumed->accumulation);
         setup.samplesResumed = setup.renderer->samplesPerPixel();
         setup.fewestResumed = film::samplesTakenSpan(setup.resumed->accumulation).fewest;
     }
+    setup.crop = line.crop;
     setup.setupSeconds = secondsSince(setupStart);
     return setup;
 }
@@ -337,6 +370,13 @@ std::string summaryLine(const RenderSetup& setup, const film::Accumulation& accu
                                         renderer.discardedSamples())
             : Progress::summary(renderer.width(), renderer.height(), renderer.samplesPerPixel(),
                                 run.seconds, renderer.discardedSamples(), setup.samplesResumed);
+    if (const auto& crop = setup.crop) {
+        // The numbers are the crop's: the paths traced.
+        summary = Progress::summary(crop->width(), crop->height(), renderer.samplesPerPixel(),
+                                    run.seconds, renderer.discardedSamples(), 0) +
+                  " (crop " + film::formatCrop(*crop) + " of " + std::to_string(renderer.width()) +
+                  "x" + std::to_string(renderer.height()) + ")";
+    }
     char setupText[96];
     if (run.windowSeconds)
         std::snprintf(setupText, sizeof setupText, " (setup %.2f s; window open %.2f s)",
@@ -386,6 +426,7 @@ void writeOutputs(RenderSetup& setup, const CommandLine& line, const film::Accum
     }
     if (interrupted)
         metadata.interrupted = interruptionNote(line, renderer.samplesPerPixel(), run.seconds);
+    metadata.crop = line.crop;
     // All images, or none (io/OutputFiles.h).
     std::vector<io::OutputImage> outputs = renderOutputs(
         {line.outputPath()}, line.statisticsOutput, accumulation, metadata,
@@ -394,19 +435,153 @@ void writeOutputs(RenderSetup& setup, const CommandLine& line, const film::Accum
         const auto start = std::chrono::steady_clock::now();
         outputs.push_back(denoisedOutput(denoisedPath(line.outputPath()),
                                          denoisedRadiance(accumulation), metadata,
-                                         line.outputPath(), renderer.exposure()));
+                                         line.outputPath()));
         denoiseSeconds = secondsSince(start);
     }
     io::writeAllOrNothing(outputs);
 }
 
-// Writes what the render promised and prints its summary; returns the exit status.
+// How a render ended, for the summary, --summary-json and the exit status.
+struct RenderEnd {
+    std::string stopReason;  // "samples", "time limit", "target error", ...
+    std::optional<bool> targetReached;
+    int exitStatus = kExitSuccess;
+};
+
+RenderEnd renderEnd(const RenderSetup& setup, const CommandLine& line, const RenderRun& run,
+                    bool interrupted)
+{
+    RenderEnd end;
+    if (setup.errorTarget)
+        end.targetReached = setup.errorTarget->reached();
+    if (interrupted) {
+        end.stopReason = run.endedEarly ? "window closed" : "interrupted";
+        end.exitStatus = kExitInterrupted;
+        return end;
+    }
+    if (!line.isBatch()) {
+        end.stopReason = "window closed";
+        return end;
+    }
+    const render::ProgressiveRenderer& renderer = *setup.renderer;
+    if (setup.errorTarget && setup.errorTarget->reached()) {
+        end.stopReason = "target error";
+    } else if ((setup.errorTarget && setup.errorTarget->limitReached()) ||
+               (line.samplesPerPixel && renderer.samplesPerPixel() >= *line.samplesPerPixel)) {
+        end.stopReason = "samples";
+    } else {
+        end.stopReason = "time limit";
+    }
+    if (setup.errorTarget && !setup.errorTarget->reached())
+        end.exitStatus = kExitTargetNotReached;
+    return end;
+}
+
+// `text` as a JSON string.
+std::string jsonString(const std::string& text)
+{
+    std::string quoted = "\"";
+    for (const char c : text) {
+        if (c == '"' || c == '\\') {
+            quoted += '\\';
+            quoted += c;
+        } else if (static_cast<unsigned char>(c) < 0x20) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+            quoted += escaped;
+        } else {
+            quoted += c;
+        }
+    }
+    return quoted + "\"";
+}
+
+std::string jsonNumber(double value)
+{
+    if (!std::isfinite(value))
+        return "null";
+    char text[40];
+    std::snprintf(text, sizeof text, "%.9g", value);
+    return text;
+}
+
+// The summary's numbers as one JSON object (--summary-json; README, docs/USAGE.md).
+std::string summaryJson(const RenderSetup& setup, const CommandLine& line,
+                        const film::Accumulation& accumulation, const RenderRun& run,
+                        const RenderEnd& end, const std::vector<std::filesystem::path>& written)
+{
+    const render::ProgressiveRenderer& renderer = *setup.renderer;
+    const film::SampleCountSpan span = film::samplesTakenSpan(accumulation);
+    const double samplesInAll = film::samplesTakenInAll(accumulation);
+    const double resumedInAll =
+        setup.resumed ? film::samplesTakenInAll(setup.resumed->accumulation) : 0.0;
+    // As the summary line counts them: the paths this run traced.
+    const double paths =
+        renderer.samplesAdaptively()
+            ? samplesInAll - resumedInAll
+            : (setup.crop ? static_cast<double>(setup.crop->width()) * setup.crop->height()
+                          : static_cast<double>(renderer.width()) * renderer.height()) *
+                  (renderer.samplesPerPixel() - setup.samplesResumed);
+    std::string text = "{\n";
+    auto field = [&text](const char* name, const std::string& value) {
+        text += std::string(text.size() > 2 ? ",\n" : "") + "  " + jsonString(name) + ": " + value;
+    };
+    field("scene", jsonString(line.scene.string()));
+    field("width", std::to_string(renderer.width()));
+    field("height", std::to_string(renderer.height()));
+    field("crop", setup.crop ? jsonString(film::formatCrop(*setup.crop)) : "null");
+    field("samplesPerPixel", std::to_string(renderer.samplesPerPixel()));
+    field("fewestSamples", std::to_string(span.fewest));
+    field("mostSamples", std::to_string(span.most));
+    field("samplesResumed", std::to_string(setup.samplesResumed));
+    field("samplesDiscarded", std::to_string(renderer.discardedSamples()));
+    field("seconds", jsonNumber(run.seconds));
+    field("setupSeconds", jsonNumber(setup.setupSeconds));
+    field("megapathsPerSecond", jsonNumber(run.seconds > 0.0 ? paths / run.seconds / 1e6 : 0.0));
+    const film::ErrorEstimate* estimate =
+        setup.errorTarget && setup.errorTarget->estimate() ? &*setup.errorTarget->estimate()
+                                                           : nullptr;
+    field("targetError", line.targetError ? jsonNumber(*line.targetError) : "null");
+    field("errorReached", estimate ? jsonNumber(estimate->relativeError) : "null");
+    field("errorUncertainty", estimate ? jsonNumber(estimate->uncertainty) : "null");
+    field("targetReached",
+          end.targetReached ? (*end.targetReached ? "true" : "false") : std::string("null"));
+    field("stopReason", jsonString(end.stopReason));
+    field("exitStatus", std::to_string(end.exitStatus));
+    std::string outputs;
+    for (const std::filesystem::path& path : written)
+        outputs += (outputs.empty() ? "" : ", ") + jsonString(path.string());
+    field("outputs", "[" + outputs + "]");
+    field("device",
+          jsonString(describeRenderingDevice(setup.context->identity(), renderer.kernel())));
+    return text + "\n}\n";
+}
+
+void writeSummaryJson(const std::filesystem::path& path, const std::string& json)
+{
+    std::ofstream file(path, std::ios::binary | std::ios::trunc);
+    file << json;
+    file.close();
+    if (!file)
+        throw std::runtime_error("cannot write the summary to " + path.string());
+}
+
+// Writes what the render promised and prints its summary (unless --quiet) and writes it as
+// JSON (--summary-json); returns the exit status.
 int finishRender(RenderSetup& setup, const CommandLine& line, const RenderRun& run,
                  bool interrupted)
 {
     render::ProgressiveRenderer& renderer = *setup.renderer;
     const film::Accumulation accumulation = renderer.accumulation();
     std::string summary = summaryLine(setup, accumulation, run);
+    auto report = [&](const std::string& text, const RenderEnd& end,
+                      const std::vector<std::filesystem::path>& written) {
+        if (!line.quiet)
+            std::cout << text << std::endl;
+        if (line.summaryJson)
+            writeSummaryJson(*line.summaryJson,
+                             summaryJson(setup, line, accumulation, run, end, written));
+    };
 
     // An image without a sample is all black, and a resumed render without a new sample is
     // the file it resumed: neither is written, nor over an older file.
@@ -426,34 +601,43 @@ int finishRender(RenderSetup& setup, const CommandLine& line, const RenderRun& r
         }
         std::error_code error;
         const bool older = std::filesystem::exists(line.outputPath(), error);
-        std::cout << summary << " (interrupted before the first " << newSample
-                  << "sample: nothing written"
-                  << (older ? ", " + line.outputPath().string() + " left as it was" : "")
-                  << ")" << std::endl;
+        report(summary + " (interrupted before the first " + newSample +
+                   "sample: nothing written" +
+                   (older ? ", " + line.outputPath().string() + " left as it was" : "") + ")",
+               renderEnd(setup, line, run, interrupted), {});
         return kExitInterrupted;
     }
 
+    std::vector<std::filesystem::path> written;
     if (setup.writesFile) {
         double denoiseSeconds = 0.0;
         writeOutputs(setup, line, accumulation, run, interrupted, denoiseSeconds);
         summary += " -> " + line.outputPath().string();
+        written.push_back(line.outputPath());
         if (line.denoise) {
             char seconds[48];
             std::snprintf(seconds, sizeof seconds, " (denoised in %.2f s)", denoiseSeconds);
             summary += " and " + denoisedPath(line.outputPath()).string() + seconds;
+            written.push_back(denoisedPath(line.outputPath()));
         }
-        if (line.statisticsOutput)
+        if (line.statisticsOutput) {
             summary += " and " + line.statisticsOutput->string();
+            written.push_back(*line.statisticsOutput);
+        }
     }
     if (interrupted)
         summary += " (interrupted)";
-    if (setup.errorTarget) {
+    if (setup.errorTarget)
         setup.errorTarget->conclude(renderer);
+    const RenderEnd end = renderEnd(setup, line, run, interrupted);
+    if (setup.errorTarget)
         summary += "; " + setup.errorTarget->summaryText(
                               targetStop(line, *setup.errorTarget, interrupted));
-    }
-    std::cout << summary << std::endl;
-    return interrupted ? kExitInterrupted : kExitSuccess;
+    if (end.exitStatus == kExitTargetNotReached)
+        summary += " (exit status " + std::to_string(kExitTargetNotReached) +
+                   ": the target error was not reached)";
+    report(summary, end, written);
+    return end.exitStatus;
 }
 
 }  // namespace

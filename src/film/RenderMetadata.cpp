@@ -2,6 +2,7 @@
 
 #include "film/Accumulation.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -39,6 +40,33 @@ std::vector<const settings::SettingRow*> imageSettings()
         if (row.isRecorded())
             recorded.push_back(&row);
     return recorded;
+}
+
+std::string formatCrop(const PixelCrop& crop)
+{
+    return std::to_string(crop.x0) + " " + std::to_string(crop.y0) + " " +
+           std::to_string(crop.x1) + " " + std::to_string(crop.y1);
+}
+
+std::optional<PixelCrop> parseCrop(const std::string& text)
+{
+    std::string spaced = text;
+    std::replace(spaced.begin(), spaced.end(), ',', ' ');
+    std::istringstream words(spaced);
+    int values[4];
+    for (int& value : values) {
+        std::string word;
+        if (!(words >> word))
+            return std::nullopt;
+        const char* last = word.data() + word.size();
+        const auto [end, error] = std::from_chars(word.data(), last, value);
+        if (error != std::errc() || end != last)
+            return std::nullopt;
+    }
+    std::string more;
+    if (words >> more)
+        return std::nullopt;
+    return PixelCrop{values[0], values[1], values[2], values[3]};
 }
 
 std::string formatCamera(const scene::Camera& camera)
@@ -101,6 +129,8 @@ std::vector<io::ImageAttribute> metadataAttributes(const RenderMetadata& metadat
         attributes.push_back({kPrefix + "gitCommit", metadata.gitCommit});
     if (!metadata.interrupted.empty())
         attributes.push_back({kPrefix + "interrupted", metadata.interrupted});
+    if (metadata.crop)
+        attributes.push_back({kPrefix + "crop", formatCrop(*metadata.crop)});
     if (!metadata.mergedFrom.empty()) {
         std::string files;
         for (const std::string& file : metadata.mergedFrom)
@@ -172,6 +202,13 @@ std::optional<RenderMetadata> metadataFromAttributes(
     metadata.glVersion = values["glVersion"];
     metadata.kernel = values["kernel"];
     metadata.interrupted = values["interrupted"];
+    if (values.count("crop") != 0) {
+        metadata.crop = parseCrop(values["crop"]);
+        if (!metadata.crop || metadata.crop->x0 < 0 || metadata.crop->y0 < 0 ||
+            metadata.crop->width() <= 0 || metadata.crop->height() <= 0)
+            throw malformed("crop", "is '" + values["crop"] + "', not 'X0 Y0 X1 Y1' with X0 < X1 "
+                                    "and Y0 < Y1, from 0");
+    }
     std::istringstream merged(values["mergedFrom"]);
     for (std::string line; std::getline(merged, line);)
         if (!line.empty())

@@ -15,6 +15,32 @@
 
 namespace film {
 
+// A rectangle of the image in pixels, the top-left pixel (0, 0): columns x0 to x1 - 1, rows
+// y0 to y1 - 1 (half-open). A render with --crop traces only these pixels of the full frame;
+// the others hold no sample.
+struct PixelCrop {
+    int x0 = 0;
+    int y0 = 0;
+    int x1 = 0;
+    int y1 = 0;
+
+    int width() const { return x1 - x0; }
+    int height() const { return y1 - y0; }
+    bool disjointFrom(const PixelCrop& other) const
+    {
+        return x1 <= other.x0 || other.x1 <= x0 || y1 <= other.y0 || other.y1 <= y0;
+    }
+    bool operator==(const PixelCrop& other) const
+    {
+        return x0 == other.x0 && y0 == other.y0 && x1 == other.x1 && y1 == other.y1;
+    }
+};
+
+// "X0 Y0 X1 Y1", and back (spaces or commas between; nothing where the text is not four whole
+// numbers).
+std::string formatCrop(const PixelCrop& crop);
+std::optional<PixelCrop> parseCrop(const std::string& text);
+
 struct RenderMetadata {
     int width = 0;   // the image's own size (the format holds it; no attribute)
     int height = 0;
@@ -50,6 +76,9 @@ struct RenderMetadata {
     std::string gitCommit;  // empty when the program was not built from a git checkout
     // The files a merge read, in order.
     std::vector<std::string> mergedFrom;
+    // Where only part of the frame was traced (--crop; for a merge, a rectangle holding every
+    // pixel its inputs traced): attribute raytracer:crop. Nothing: the whole frame.
+    std::optional<PixelCrop> crop;
 };
 
 // The settings that change the image (settings/Options.def's rows with .metadata): renders

@@ -17,9 +17,9 @@ const char* const StatisticsPanel::kHelp =
 
 bool PanelSettings::operator==(const PanelSettings& other) const
 {
-    return exposure == other.exposure && hitTolerance == other.hitTolerance &&
-           maxBounces == other.maxBounces && environment == other.environment &&
-           previewDenoiser == other.previewDenoiser;
+    return exposure == other.exposure && toneCurve == other.toneCurve &&
+           hitTolerance == other.hitTolerance && maxBounces == other.maxBounces &&
+           environment == other.environment && previewDenoiser == other.previewDenoiser;
 }
 
 namespace {
@@ -128,6 +128,17 @@ PanelSettings StatisticsPanel::draw(const PanelReadings& readings, const PanelSe
         ImGui::PushItemWidth(150.0f);
         ImGui::SliderFloat("exposure", &tuned.exposure, 0.25f, 32.0f, "%.2f",
                            ImGuiSliderFlags_Logarithmic);
+        // The curves --tone-curve names, in their order (settings/Choices.h).
+        const auto& curves = settings::Choices<settings::ToneCurveKind>::values;
+        int curve = settings::choiceCode(tuned.toneCurve);
+        if (ImGui::Combo(
+                "tone curve", &curve,
+                [](void*, int i, const char** name) {
+                    *name = settings::Choices<settings::ToneCurveKind>::values[i].name;
+                    return true;
+                },
+                nullptr, static_cast<int>(curves.size())))
+            tuned.toneCurve = curves[curve].value;
         ImGui::SliderFloat("hit tolerance", &tuned.hitTolerance, 0.01f, 4.0f, "%.3f px",
                            ImGuiSliderFlags_Logarithmic);
         ImGui::SliderInt("max bounces", &tuned.maxBounces, 0, 64);

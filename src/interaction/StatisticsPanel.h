@@ -34,6 +34,7 @@ struct PanelReadings {
 // starts it from the renderer's settings.
 struct PanelSettings {
     float exposure = film::ToneCurve::kDefaultExposure;
+    settings::ToneCurveKind toneCurve = film::ToneCurve::kDefaultCurve;
     float hitTolerance = settings::RenderSettings{}.hitTolerance;
     int maxBounces = settings::RenderSettings{}.maxBounces;
     bool environment = settings::RenderSettings{}.environmentLight;

@@ -227,10 +227,19 @@ void ProgressiveRenderer::setSettings(const settings::RenderSettings& settings)
     clearAccumulation();
 }
 
+void ProgressiveRenderer::setCrop(int x0, int y0, int x1, int y1)
+{
+    if (!(0 <= x0 && x0 < x1 && x1 <= width() && 0 <= y0 && y0 < y1 && y1 <= height()))
+        throw std::invalid_argument("a crop must lie within the image and hold a pixel");
+    crop_ = {x0, height() - y1, x1 - x0, y1 - y0};
+    rowsPerBand_ = std::min(rowsPerBand_, crop_.height);
+}
+
 void ProgressiveRenderer::resize(int width, int height)
 {
     if (width == this->width() && height == this->height())
         return;
+    crop_ = {};
     checkRenderSize(width, height);
     targets_ = AccumulationTargets(width, height, settings_.featureBuffers);
     rowsPerBand_ = height;
@@ -354,8 +363,10 @@ int ProgressiveRenderer::fewestSamples() const
     const io::Image estimate = readTarget(targets_.previous().estimate, 4);
     const io::Image moments = readTarget(targets_.previous().moments, 4);
     float fewest = static_cast<float>(samplesPerPixel_);
-    for (int y = 0; y < height(); ++y)
-        for (int x = 0; x < width(); ++x)
+    const PixelRegion traced = tracedRegion();
+    // The images' row 0 is the top, the region's the bottom.
+    for (int y = height() - traced.y - traced.height; y < height() - traced.y; ++y)
+        for (int x = traced.x; x < traced.x + traced.width; ++x)
             fewest = std::min(fewest, estimate.at(x, y, 3) + moments.at(x, y, 3));
     return static_cast<int>(fewest + 0.5f);
 }
@@ -375,12 +386,15 @@ bool ProgressiveRenderer::drawFrame(const std::function<bool()>& keepGoing, int 
     pigmentTextures_.texture.bind(kPigmentTexturesUnit);
     bindEnvironmentTextures();
     tileSampleTargets_.bind(kTileSampleTargetsUnit);
-    for (int row = 0; row < height();) {
-        if (row > 0 && keepGoing && !keepGoing())
+    const PixelRegion traced = tracedRegion();
+    const int top = traced.y + traced.height;
+    for (int row = traced.y; row < top;) {
+        if (row > traced.y && keepGoing && !keepGoing())
             return false;
-        const int rows = std::min(rowsPerBand_, height() - row);
+        const int rows = std::min(rowsPerBand_, top - row);
         const auto bandStart = std::chrono::steady_clock::now();
-        program_->trace(destination, {0, row, width(), rows}, width(), height(), triangle_);
+        program_->trace(destination, {traced.x, row, traced.width, rows}, width(), height(),
+                        triangle_);
         glFinish();
         const double seconds = secondsSince(bandStart);
         row += rows;
@@ -388,7 +402,7 @@ bool ProgressiveRenderer::drawFrame(const std::function<bool()>& keepGoing, int 
         if (settings_.secondsPerBand > 0.0) {
             const double rowsForTarget =
                 rows * settings_.secondsPerBand / std::max(seconds, 1e-4);
-            rowsPerBand_ = std::clamp(static_cast<int>(rowsForTarget), 1, height());
+            rowsPerBand_ = std::clamp(static_cast<int>(rowsForTarget), 1, traced.height);
         }
     }
     gl::throwOnGlError("rendering a frame");
@@ -458,7 +472,7 @@ std::uint64_t ProgressiveRenderer::discardedSamples() const
 io::Image ProgressiveRenderer::toneMapped() const
 {
     return toneMapper_.render(targets_.previous().estimate, width(), height(), triangle_,
-                              exposure_);
+                              settings_.exposure, settings_.toneCurve);
 }
 
 void ProgressiveRenderer::displayToWindow(int windowWidth, int windowHeight) const
@@ -472,7 +486,8 @@ void ProgressiveRenderer::displayToWindow(int windowWidth, int windowHeight) con
     }
     const bool denoised = previewDenoising_ && canPreviewDenoise() && !showsPreview();
     toneMapper_.draw(denoised ? previewDenoised() : targets_.previous().estimate, shownWidth,
-                     shownHeight, windowWidth, windowHeight, triangle_, exposure_);
+                     shownHeight, windowWidth, windowHeight, triangle_, settings_.exposure,
+                     settings_.toneCurve);
 }
 
 const gl::Texture& ProgressiveRenderer::previewDenoised() const

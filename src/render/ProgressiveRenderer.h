@@ -78,6 +78,10 @@ public:
     // Every setting but the shader's (variant, switchable environment), which stay as built.
     void setSettings(const settings::RenderSettings& settings);
     void resize(int width, int height);
+    // From the next frame on, traces only columns x0 to x1 - 1 and rows y0 to y1 - 1 (row 0
+    // the top; within the image): the other pixels keep what they hold (nothing, from a
+    // fresh start), so the crops of a frame merge into it exactly. Lifted by resize.
+    void setCrop(int x0, int y0, int x1, int y1);
     const settings::RenderSettings& settings() const { return settings_; }
     // The camera the image is rendered from.
     const scene::Camera& camera() const { return scene_.camera; }
@@ -125,9 +129,11 @@ public:
     // What the preview denoiser makes of the accumulation: linear RGB, top row first (for
     // tests and docs/DENOISING.md's measurements). Throws std::logic_error without features.
     io::Image previewDenoisedRadiance() const;
-    // The tone map's exposure (display only: the accumulation goes on).
-    void setExposure(float exposure) { exposure_ = exposure; }
-    float exposure() const { return exposure_; }
+    // The tone map's exposure and curve (settings().exposure and toneCurve; display only: the
+    // accumulation goes on).
+    void setExposure(float exposure) { settings_.exposure = exposure; }
+    float exposure() const { return settings_.exposure; }
+    void setToneCurve(settings::ToneCurveKind curve) { settings_.toneCurve = curve; }
 
     const scene::SceneFeatures& features() const { return code_.features; }
     // The kernel that traces the paths (settings().kernel as chosen in this context), and why.
@@ -154,6 +160,11 @@ private:
     // Starts the accumulation again without reseeding: cheaper than restartAccumulation,
     // for the many restarts of a view being changed.
     void clearAccumulation();
+    // The crop, or the whole image.
+    PixelRegion tracedRegion() const
+    {
+        return crop_.width > 0 ? crop_ : PixelRegion{0, 0, width(), height()};
+    }
     io::Image readTarget(const gl::Texture& texture, int channels) const;
 
     settings::RenderSettings settings_;
@@ -175,8 +186,10 @@ private:
     int frames_ = 0;
     int samplesPerPixel_ = 0;
     int rowsPerBand_ = 0;
+    // The pixels a frame traces, in GL's coordinates (row 0 the bottom): the whole image
+    // unless setCrop says otherwise; empty (width 0) for the whole image.
+    PixelRegion crop_;
     int previewDivisor_ = 0;  // 0: the estimate is the accumulation
-    float exposure_ = ToneMapper::kDefaultExposure;
     bool previewDenoising_ = false;
     mutable std::unique_ptr<PreviewDenoiser> previewDenoiser_;  // made at its first use
     const gl::Texture& previewDenoised() const;

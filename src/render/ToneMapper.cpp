@@ -5,6 +5,7 @@
 #include "render/PathTracerProgram.h"
 #include "shadergen/ShaderSource.h"
 #include "film/ToneCurve.h"
+#include "settings/SettingsTable.h"
 
 #include <vector>
 
@@ -12,14 +13,15 @@ namespace render {
 
 ToneMapper::ToneMapper(const std::filesystem::path& shaderDirectory)
     : program_(fullscreenVertexSource(shaderDirectory),
-               "#version 330 core\n" + film::toneCurveDefines() +
+               "#version 330 core\n" + settings::choiceDefines() + film::toneCurveDefines() +
                    shadergen::readTextFile(shaderDirectory / "modules" / "tone_map.frag"),
                "the tone mapper")
 {
 }
 
 void ToneMapper::draw(const gl::Texture& estimate, int width, int height, int targetWidth,
-                      int targetHeight, const gl::VertexArray& triangle, float exposure) const
+                      int targetHeight, const gl::VertexArray& triangle, float exposure,
+                      settings::ToneCurveKind curve) const
 {
     program_.use();
     estimate.bind(0);
@@ -29,19 +31,21 @@ void ToneMapper::draw(const gl::Texture& estimate, int width, int height, int ta
     glUniform2f(program_.uniformLocation("uTargetSize"), static_cast<float>(targetWidth),
                 static_cast<float>(targetHeight));
     glUniform1f(program_.uniformLocation("uExposure"), exposure);
+    glUniform1i(program_.uniformLocation("uToneCurve"), settings::choiceCode(curve));
     glViewport(0, 0, targetWidth, targetHeight);
     glDisable(GL_SCISSOR_TEST);
     triangle.drawFullscreenTriangle();
 }
 
 io::Image ToneMapper::render(const gl::Texture& estimate, int width, int height,
-                             const gl::VertexArray& triangle, float exposure) const
+                             const gl::VertexArray& triangle, float exposure,
+                             settings::ToneCurveKind curve) const
 {
     const gl::Texture picture =
         gl::createTexture2D(GL_RGBA8, width, height, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
     const gl::Framebuffer target({&picture});
     target.bindForDrawing();
-    draw(estimate, width, height, width, height, triangle, exposure);
+    draw(estimate, width, height, width, height, triangle, exposure, curve);
     target.bindForReading(0);
     io::Image image = readDisplayPixels(width, height);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -4,13 +4,15 @@
 #include "gl/Texture.h"
 #include "gl/VertexArray.h"
 #include "io/Image.h"
+#include "settings/Choices.h"
 
 #include <filesystem>
 
 namespace render {
 
 // The display pass (shaders/modules/tone_map.frag): linear radiance to a picture, drawn to
-// the window or to an offscreen target that is read back for image files.
+// the window or to an offscreen target that is read back for image files, by any of the tone
+// curves (one program: the curve is a uniform, so the window's panel switches it at once).
 class ToneMapper {
 public:
     // The original program's exposure: radiance is multiplied by it before the curve.
@@ -22,11 +24,13 @@ public:
     // bound, of size target.
     void draw(const gl::Texture& estimate, int width, int height, int targetWidth,
               int targetHeight, const gl::VertexArray& triangle,
-              float exposure = kDefaultExposure) const;
+              float exposure = kDefaultExposure,
+              settings::ToneCurveKind curve = film::ToneCurve::kDefaultCurve) const;
 
     // The tone-mapped picture of `estimate` as display values in [0, 1], top row first.
     io::Image render(const gl::Texture& estimate, int width, int height,
-                     const gl::VertexArray& triangle, float exposure = kDefaultExposure) const;
+                     const gl::VertexArray& triangle, float exposure = kDefaultExposure,
+                     settings::ToneCurveKind curve = film::ToneCurve::kDefaultCurve) const;
 
 private:
     gl::Program program_;

@@ -122,4 +122,28 @@ std::vector<double> lightPowers(const std::vector<Light>& lights, const LightPow
     return powers;
 }
 
+bool emitsLight(const Scene& scene)
+{
+    auto bright = [](const glm::vec3& value) {
+        return value.x > 0.0f || value.y > 0.0f || value.z > 0.0f;
+    };
+    for (const PointLight& point : scene.pointLights)
+        if (bright(point.intensity))
+            return true;
+    for (const SphereLight& sphere : sphereLights(scene))
+        if (bright(sphere.radiance))
+            return true;
+    switch (scene.environment.kind) {
+    case EnvironmentKind::None:
+        return false;
+    case EnvironmentKind::Sky:
+        return true;
+    case EnvironmentKind::Constant:
+        return bright(scene.environment.color);
+    case EnvironmentKind::Map:
+        return scene.environment.intensity > 0.0f;
+    }
+    return true;
+}
+
 }  // namespace scene

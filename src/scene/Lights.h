@@ -103,6 +103,11 @@ std::string codeName(const LightDescription& description);
 // order): the shaders' light records.
 std::vector<Light> sceneLights(const Scene& scene);
 
+// Whether anything in the scene gives light: a point or sphere light that is not black, or an
+// environment that is not (none, a black colour, a map at intensity 0). A scene that gives
+// none renders black whatever the samples; the program warns before rendering it.
+bool emitsLight(const Scene& scene);
+
 // The emitted power of each light of `lights` (channels averaged), in double: the power of a
 // bright, large sphere light (radiance near the float maximum) overflows float, and one
 // infinite power would make every selection probability NaN.

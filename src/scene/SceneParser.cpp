@@ -3,13 +3,16 @@
 #include "scene/PrimitiveKinds.h"
 #include "scene/SceneFileText.h"
 #include "scene/SceneError.h"
+#include "scene/Spelling.h"
 #include "scene/TokenCursor.h"
 #include "scene/Tokenizer.h"
 #include "scene/UserSdfDeclarations.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cstdlib>
 #include <filesystem>
+#include <initializer_list>
 #include <optional>
 #include <set>
 #include <string>
@@ -40,6 +43,32 @@ std::string primitiveWords()
     return words;
 }
 
+// " (did you mean 'sphere'?)" where `word` is within two edits of one of `keywords`.
+std::string didYouMean(const std::string& word, const std::vector<std::string>& keywords)
+{
+    const auto nearest = nearestWord(word, keywords);
+    return nearest ? " (did you mean '" + *nearest + "'?)" : "";
+}
+
+// Every word that may stand where an object's type does: the primitives', the CSG operators'
+// and the transforms'.
+std::vector<std::string> shapeKeywords()
+{
+    std::vector<std::string> words(kTransformWords.begin(), kTransformWords.end());
+    for (const PrimitiveKind& kind : primitiveKinds())
+        words.push_back(kind.keyword);
+    for (const CsgOperatorDescription& op : csgOperatorDescriptions())
+        words.push_back(op.keyword);
+    return words;
+}
+
+bool isNumberWord(const std::string& word)
+{
+    char* end = nullptr;
+    std::strtod(word.c_str(), &end);
+    return !word.empty() && end == word.c_str() + word.size();
+}
+
 class Parser : private TokenCursor {
 public:
     Parser(std::vector<Token> tokens, std::string fileName, const FileLookup& lookup)
@@ -68,14 +97,45 @@ public:
         return scene;
     }
 
+    // A camera alone (parseCameraText): its groups may follow their words.
+    Camera parseCameraAlone()
+    {
+        labelledCamera_ = true;
+        Camera camera;
+        parseCamera(camera);
+        if (!atEnd())
+            fail("the end of the camera (after the field of view, only 'lens R D' may follow)");
+        return camera;
+    }
+
 private:
+    // In a camera alone, the word before a group (any of `words`) is skipped.
+    void skipLabel(std::initializer_list<const char*> words)
+    {
+        if (!labelledCamera_)
+            return;
+        if (const Token* token = peek())
+            for (const char* word : words)
+                if (token->text == word) {
+                    skip();
+                    return;
+                }
+    }
+
     // --- sections -----------------------------------------------------------------------
 
     void parseSectionKeywords(Scene& scene)
     {
         while (const Token* token = peek()) {
-            if (kSectionKeywords.count(token->text) == 0)
+            if (kSectionKeywords.count(token->text) == 0) {
+                // A misspelt keyword would be read as the next section's first number.
+                const std::vector<std::string> keywords(kSectionKeywords.begin(),
+                                                        kSectionKeywords.end());
+                if (!isNumberWord(token->text))
+                    if (const std::string hint = didYouMean(token->text, keywords); !hint.empty())
+                        fail("a number, or a section keyword" + hint);
                 return;
+            }
             skip();
             if (token->text == "environment")
                 parseEnvironment(scene.environment);
@@ -91,6 +151,16 @@ private:
             fail(expected);
         const int line = token->line;
         const EnvironmentDescription* kind = findEnvironmentKind(token->text);
+        if (kind == nullptr && !isNumberWord(token->text)) {
+            std::vector<std::string> words;
+            for (const EnvironmentDescription& description : environmentDescriptions()) {
+                words.push_back(description.keyword);
+                if (*description.alias != '\0')
+                    words.push_back(description.alias);
+            }
+            if (const std::string hint = didYouMean(token->text, words); !hint.empty())
+                fail(expected + hint);
+        }
         if (kind != nullptr)
             skip();
         else
@@ -104,11 +174,15 @@ private:
 
     void parseCamera(Camera& camera)
     {
+        skipLabel({"eye"});
         camera.eye = vector3("camera eye position");
+        skipLabel({"target", "look-at"});
         const std::size_t targetToken = mark();
         camera.target = vector3("camera target point");
+        skipLabel({"up"});
         const std::size_t upToken = mark();
         camera.up = vector3("camera up vector");
+        skipLabel({"fovy", "fov"});
         const std::size_t fovToken = mark();
         camera.verticalFieldOfViewDegrees = number("vertical field of view in degrees");
 
@@ -163,8 +237,12 @@ private:
             const std::string expected = "a pigment kind for " + which + ": " + pigmentKeywords();
             const Token& word = next(expected);
             const PigmentDescription* kind = findPigmentKind(word.text);
-            if (kind == nullptr)
-                failAt(word, expected);
+            if (kind == nullptr) {
+                std::vector<std::string> words;
+                for (const PigmentDescription& description : pigmentDescriptions())
+                    words.push_back(description.keyword);
+                failAt(word, expected + didYouMean(word.text, words));
+            }
             Pigment pigment;
             pigment.kind = kind->kind;
             pigment.line = word.line;
@@ -248,7 +326,7 @@ private:
         if (const PrimitiveKind* primitive = findPrimitiveKind(word))
             return {primitive->read(*this), std::nullopt};
         if (word == "{" || word == "}" || !isGlslIdentifier(word))
-            failAt(type, expected);
+            failAt(type, expected + didYouMean(word, shapeKeywords()));
 
         UserSdf user;
         user.name = word;
@@ -256,7 +334,8 @@ private:
         if (!found)
             failAt(type, "an object type, or a user SDF with a shader file " +
                              shownToken(word) + ".glsl (looked in " +
-                             joinFolders(lookup_.shaderFolders()) + ")");
+                             joinFolders(lookup_.shaderFolders()) + ")" +
+                             didYouMean(word, shapeKeywords()));
         user.sourcePath = *found;
         readUserSdfDeclarations(user);
         user.position = vector3(shownToken(word) + " position");
@@ -294,8 +373,13 @@ private:
             const std::string expected = "a smooth-operator kind: exp (sharpness k) or poly (radius)";
             const Token& mode = next(expected);
             const CsgOperatorDescription* smooth = findCsgOperator(word, mode.text);
-            if (smooth == nullptr)
-                failAt(mode, expected);
+            if (smooth == nullptr) {
+                std::vector<std::string> words;
+                for (const CsgOperatorDescription& op : csgOperatorDescriptions())
+                    if (op.keyword == word && *op.smoothingWord != '\0')
+                        words.push_back(op.smoothingWord);
+                failAt(mode, expected + didYouMean(mode.text, words));
+            }
             node.op = smooth->op;
             node.parameter = smooth->smoothing == CsgSmoothing::Exponential
                                  ? positiveNumber("smooth-min sharpness k")
@@ -318,6 +402,7 @@ private:
     }
 
     const FileLookup& lookup_;
+    bool labelledCamera_ = false;
 };
 
 }  // namespace
@@ -349,6 +434,14 @@ Scene parseSceneText(const std::string& text, const std::string& fileName,
     Scene scene = parser.parse();
     scene.sourcePath = fileName;
     return scene;
+}
+
+Camera parseCameraText(const std::string& text, const std::string& source)
+{
+    // A camera names no file: nothing is looked up.
+    const FileLookup noFiles{fs::path(), fs::path()};
+    Parser parser(tokenize(text, kMaxTokens), source, noFiles);
+    return parser.parseCameraAlone();
 }
 
 Scene parseSceneFile(const fs::path& path)

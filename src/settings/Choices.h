@@ -1,6 +1,6 @@
 #pragma once
 // The settings that take one of a few named values (--sampler, --fresnel, --masking, --kernel,
-// the shader variant),
+// --tone-curve, the shader variant),
 // each with its names, its codes and what each value means, in one place. The command line,
 // the files' metadata and --help read the names from here, and the shader receives the codes
 // as generated #defines (PREFIX_NAME, settings/SettingsTable.h writes them): no code is
@@ -47,6 +47,10 @@ enum class PathKernel {
 // Where a path's random decisions come from (shaders/modules/sampler.glsl): every one from
 // the sample's own random stream, or the first bounces' from Owen-scrambled Sobol points.
 enum class SamplerKind { Independent, Sobol };
+
+// The curve that maps exposed radiance to the pictures' display values (the tone-mapped
+// outputs and the window; shaders/modules/tone_map.frag and film/ToneCurve.h compute each).
+enum class ToneCurveKind { Clamp, Hable, Aces, Agx, Neutral };
 
 template <typename Enum>
 struct Choice {
@@ -111,6 +115,20 @@ struct Choices<PathKernel> {
     }};
 };
 
+template <>
+struct Choices<ToneCurveKind> {
+    static constexpr const char* glslPrefix = "TONE_CURVE_";
+    static constexpr std::array<Choice<ToneCurveKind>, 5> values = {{
+        {ToneCurveKind::Clamp, "clamp", "linear, clipped at 1"},
+        {ToneCurveKind::Hable, "hable",
+         "John Hable's filmic curve, white at 11.2 (the original program's)"},
+        {ToneCurveKind::Aces, "aces", "Narkowicz's fit of the ACES filmic curve"},
+        {ToneCurveKind::Agx, "agx", "AgX (Sobotka; Wrensch's minimal fit), hues kept"},
+        {ToneCurveKind::Neutral, "neutral",
+         "Khronos PBR Neutral: base colours shown as they are up to 0.76"},
+    }};
+};
+
 // The code the shader sees for `value`.
 template <typename Enum>
 constexpr int choiceCode(Enum value)
@@ -129,7 +147,7 @@ constexpr bool listedInCodeOrder()
 }
 static_assert(listedInCodeOrder<ShaderVariant>() && listedInCodeOrder<FresnelModel>() &&
                   listedInCodeOrder<SamplerKind>() && listedInCodeOrder<MaskingModel>() &&
-                  listedInCodeOrder<PathKernel>(),
+                  listedInCodeOrder<PathKernel>() && listedInCodeOrder<ToneCurveKind>(),
               "each choice list names every value in the order of its codes");
 
 }  // namespace settings

@@ -42,7 +42,7 @@ protected:
                        const std::vector<std::pair<std::string, std::string>>& environment = {})
         const
     {
-        arguments.insert(arguments.begin(), {scene1(), "32", "24", "--spp", "2", "--quiet"});
+        arguments.insert(arguments.begin(), {scene1(), "32", "24", "--spp", "2"});
         const ProcessResult result = runWith(arguments, environment);
         EXPECT_TRUE(result.exited && result.exitStatus == 0) << describe(result);
         const auto lines = nonEmptyLines(result.standardOutput);

@@ -347,7 +347,7 @@ TEST_F(Outputs, ARenderRemovesTheTemporaryFilesOfItsOutputThatAnEndedProcessLeft
     write(left, std::string(100000, 'x'));
     write("other.exr", "another render's");
     const ProcessResult result =
-        run({scene1(), "8", "6", "--spp", "1", "--quiet", "--output", "out.exr"});
+        run({scene1(), "8", "6", "--spp", "1", "--output", "out.exr"});
     ASSERT_TRUE(result.exited && result.exitStatus == 0) << describe(result);
     const auto lines = nonEmptyLines(result.standardOutput);
     ASSERT_GE(lines.size(), 2u) << describe(result);

@@ -61,6 +61,8 @@ settingChanges()
 {
     static const std::vector<std::pair<std::string, std::function<void(settings::RenderSettings&)>>>
         changes = {
+            {"--exposure", [](settings::RenderSettings& s) { s.exposure = 2.0f; }},
+            {"--tone-curve", [](settings::RenderSettings& s) { s.toneCurve = settings::ToneCurveKind::Agx; }},
             {"--hit-tolerance", [](settings::RenderSettings& s) { s.hitTolerance = 0.5f; }},
             {"--max-steps", [](settings::RenderSettings& s) { s.maxMarchSteps = 64; }},
             {"--over-relaxation", [](settings::RenderSettings& s) { s.overRelaxation = 1.0f; }},
@@ -128,6 +130,23 @@ TEST(RenderMetadata, FileWithoutItIsNotAnErrorButAMissingOrMalformedAttributeIs)
             << error.what();
         EXPECT_NE(std::string(error.what()).find("x.exr"), std::string::npos) << error.what();
     }
+}
+
+// --crop: recorded where there is one, nothing where the whole frame was traced, and a crop
+// that holds no pixel is refused as malformed.
+TEST(RenderMetadata, ACropSurvivesTheAttributes)
+{
+    film::RenderMetadata written = someRender();
+    EXPECT_FALSE(film::metadataFromAttributes(film::metadataAttributes(written), "x.exr")->crop);
+    written.crop = film::PixelCrop{2, 3, 10, 7};
+    const auto read = film::metadataFromAttributes(film::metadataAttributes(written), "x.exr");
+    ASSERT_TRUE(read && read->crop);
+    EXPECT_TRUE(*read->crop == *written.crop) << film::formatCrop(*read->crop);
+    std::vector<io::ImageAttribute> attributes = film::metadataAttributes(written);
+    for (io::ImageAttribute& attribute : attributes)
+        if (attribute.name == "raytracer:crop")
+            attribute.value = "10 3 2 7";
+    EXPECT_THROW(film::metadataFromAttributes(attributes, "x.exr"), std::runtime_error);
 }
 
 TEST(RenderMetadata, ChangingEveryImageSettingIsADifference)

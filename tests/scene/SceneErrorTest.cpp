@@ -1,5 +1,6 @@
 // Every error the scene format lists: a scene::SceneError whose message names the file, the
 // line, the token read and what was expected; nothing is returned half-read.
+#include "scene/CameraLine.h"
 #include "scene/SceneTestSupport.h"
 
 namespace scene_tests {
@@ -206,6 +207,90 @@ TEST(SceneErrors, ErrorLineCountsLinesOfCommentsAndBlankLines)
 {
     EXPECT_TRUE(failsAt("# a comment\n\n0 0 5 # eye\n# another\n0 0 0\n0 1 0\n\n-45\n", 8, "-45",
                         "strictly between 0 and 180"));
+}
+
+}  // namespace
+}  // namespace scene_tests
+
+// --- a misspelt keyword is answered with the nearest one, within two edits ----------------
+
+namespace scene_tests {
+namespace {
+
+TEST(SceneErrorSuggestions, AMisspeltObjectTypeIsAnsweredWithTheNearestKeyword)
+{
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 sphre 0 0 0 1\n"), 13, "sphre",
+                        "(did you mean 'sphere'?)"));
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 unoin { sphere 0 0 0 1 sphere 0 1 0 1 }\n"), 13,
+                        "unoin", "(did you mean 'union'?)"));
+}
+
+TEST(SceneErrorSuggestions, AMisspeltPigmentKindIsAnsweredWithTheNearestKeyword)
+{
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45\n0\n1\nsolit 1 1 1\n", 7, "solit",
+                        "(did you mean 'solid'?)"));
+}
+
+TEST(SceneErrorSuggestions, AMisspeltEnvironmentIsAnsweredWithTheNearestKeyword)
+{
+    EXPECT_TRUE(failsAt("environment nnoe\n0 0 5\n", 1, "nnoe", "(did you mean 'none'?)"));
+    EXPECT_TRUE(failsAt("enviroment none\n0 0 5\n", 1, "enviroment",
+                        "(did you mean 'environment'?)"));
+}
+
+TEST(SceneErrorSuggestions, AWordFarFromEveryKeywordIsOnlyRefused)
+{
+    try {
+        parse(sceneWithObjects(1, "0 0 teapot 0 0 0 1\n"));
+        FAIL() << "a teapot is no keyword";
+    } catch (const scene::SceneError& error) {
+        EXPECT_EQ(std::string(error.what()).find("did you mean"), std::string::npos)
+            << error.what();
+    }
+}
+
+// --camera's text (scene::parseCameraText): the file's camera line, its groups after their
+// words or not, checked as the file's camera is.
+TEST(CameraText, ReadsTheFilesCameraLineWithOrWithoutItsWords)
+{
+    const scene::Camera bare = scene::parseCameraText("1 2 3  4 5 6  0 0 1  40", "--camera");
+    const scene::Camera worded = scene::parseCameraText(
+        "eye 1 2 3 look-at 4 5 6 up 0 0 1 fov 40 lens 0.1 5", "--camera");
+    EXPECT_EQ(bare.eye, glm::vec3(1, 2, 3));
+    EXPECT_EQ(bare.target, glm::vec3(4, 5, 6));
+    EXPECT_EQ(bare.up, glm::vec3(0, 0, 1));
+    EXPECT_EQ(bare.verticalFieldOfViewDegrees, 40.0f);
+    EXPECT_EQ(worded.eye, bare.eye);
+    EXPECT_EQ(worded.target, bare.target);
+    ASSERT_TRUE(worded.lens.has_value());
+    EXPECT_EQ(worded.lens->focusDistance, 5.0f);
+}
+
+// What the window's C key writes (scene::cameraLine) is what --camera reads back, exactly.
+TEST(CameraText, ReadsTheWindowsCameraLineBackExactly)
+{
+    scene::Camera camera;
+    camera.eye = {1.1f, -8.4f, 4.44f};
+    camera.target = {1.0f / 3.0f, 10.0f, -2.0f};
+    camera.up = {0.0f, 0.0f, 1.0f};
+    camera.verticalFieldOfViewDegrees = 35.5f;
+    camera.lens = scene::ThinLens{0.05f, 14.0f};
+    const scene::Camera read = scene::parseCameraText(scene::cameraLine(camera), "--camera");
+    EXPECT_TRUE(scene::sameCamera(read, camera)) << scene::cameraLine(read);
+}
+
+TEST(CameraText, AnErrorNamesTheSourceAndTheToken)
+{
+    try {
+        scene::parseCameraText("1 2 3 4 5 6 0 0 1 200", "--camera");
+        FAIL() << "a field of view of 200 degrees";
+    } catch (const scene::SceneError& error) {
+        EXPECT_EQ(error.file(), "--camera");
+        EXPECT_EQ(error.token(), "200");
+        EXPECT_NE(error.expected().find("strictly between 0 and 180"), std::string::npos);
+    }
+    EXPECT_THROW(scene::parseCameraText("1 2 3 4 5 6 0 0 1 40 99", "--camera"), scene::SceneError)
+        << "nothing may follow the camera";
 }
 
 }  // namespace
