@@ -105,6 +105,8 @@ void ProgressiveRenderer::generateDriverCode()
     targets_.previous().moments.bind(kMomentsUnit);
     pigmentTextures_.texture.bind(kPigmentTexturesUnit);
     bindEnvironmentTextures();
+    if (sceneData_)
+        sceneData_->bind();
     program_->trace(targets_.next(), {0, 0, 1, 1}, width(), height(), triangle_);
     // Every uniform the shader declares is set by now: the scene's and the settings' by
     // uploadAll, the draw's by setDrawUniforms, the compute kernel's region by trace.
@@ -127,6 +129,12 @@ void ProgressiveRenderer::uploadAll()
                    {uniforms_, settings_, width(), height(),
                     static_cast<float>(pigmentTextures_.size)},
                    code_);
+    if (shadergen::specializesShapes(code_.variant)) {
+        sceneData_.reset();
+    } else {
+        sceneData_.emplace(uniforms_, code_);
+        SceneDataBuffers::setSamplers(uniforms);
+    }
     uniforms.set("uPreviousEstimate", kEstimateUnit);
     uniforms.set("uPreviousMoments", kMomentsUnit);
     uniforms.set("uPigmentTextures", kPigmentTexturesUnit);
@@ -281,6 +289,8 @@ void ProgressiveRenderer::renderPreview(int divisor, int maxBounces)
     source.moments.bind(kMomentsUnit);
     pigmentTextures_.texture.bind(kPigmentTexturesUnit);
     bindEnvironmentTextures();
+    if (sceneData_)
+        sceneData_->bind();
     program_->trace(targets_.next(), {0, 0, previewWidth, previewHeight}, width(), height(),
                     triangle_);
     uniforms.set("uImageSize",
@@ -349,6 +359,8 @@ bool ProgressiveRenderer::drawFrame(const std::function<bool()>& keepGoing, int 
     source.moments.bind(kMomentsUnit);
     pigmentTextures_.texture.bind(kPigmentTexturesUnit);
     bindEnvironmentTextures();
+    if (sceneData_)
+        sceneData_->bind();
     tileSampleTargets_.bind(kTileSampleTargetsUnit);
     for (int row = 0; row < height();) {
         if (row > 0 && keepGoing && !keepGoing())

@@ -33,8 +33,8 @@ std::string primitiveInterpreter()
     int fetched = 0;
     auto fetch = [&](int count) {
         for (; fetched < count; ++fetched)
-            out << "    vec4 " << names[fetched] << " = SHAPE_PARAMETERS[first"
-                << (fetched == 0 ? "" : " + " + std::to_string(fetched)) << "];\n";
+            out << "    vec4 " << names[fetched] << " = SHAPE_PARAMETER(first"
+                << (fetched == 0 ? "" : " + " + std::to_string(fetched)) << ");\n";
     };
     fetch(1);  // the user SDF's
     for (const PrimitiveKind* kind : kinds) {
@@ -43,7 +43,7 @@ std::string primitiveInterpreter()
             out << "    if (kind == " << code << ") {\n        float d = FLOAT_MAX;\n"
                 << "        for (int term = 0; term < extra && loopIterationAllowed(); ++term)\n"
                 << "            d = min(d, "
-                << distanceOverSlots(*kind, [](int) { return "SHAPE_PARAMETERS[first + term]"; })
+                << distanceOverSlots(*kind, [](int) { return "SHAPE_PARAMETER(first + term)"; })
                 << ");\n        return d;\n    }\n";
             continue;
         }
@@ -68,10 +68,10 @@ std::string exactPrimitiveInterpreter()
     std::stable_sort(kinds.begin(), kinds.end(), [](const PrimitiveKind* a, const PrimitiveKind* b) {
         return a->parameterCount < b->parameterCount;
     });
-    auto slot = [](int k) { return k == 0 ? "SHAPE_PARAMETERS[first]"
-                                          : "SHAPE_PARAMETERS[first + " + std::to_string(k) + "]"; };
+    auto slot = [](int k) { return k == 0 ? "SHAPE_PARAMETER(first)"
+                                          : "SHAPE_PARAMETER(first + " + std::to_string(k) + ")"; };
     std::ostringstream out;
-    out << "// Whether rays meet primitive `kind`, its parameters from SHAPE_PARAMETERS[first], by "
+    out << "// Whether rays meet primitive `kind`, its parameters from SHAPE_PARAMETER(first), by "
            "exact\n// intersection (scene/Primitives.h).\n"
            "bool primitiveMetExactly(int kind, int first)\n{\n    return ";
     for (std::size_t i = 0; i < kinds.size(); ++i) {
@@ -87,7 +87,7 @@ std::string exactPrimitiveInterpreter()
     out << ";\n}\n\n";
 
     out << "// The first crossing in (tMin, hit.t) of primitive `kind` by the ray (o, d), its\n"
-           "// parameters from SHAPE_PARAMETERS[first] (`terms` of them for a union of terms).\n"
+           "// parameters from SHAPE_PARAMETER(first) (`terms` of them for a union of terms).\n"
            "void exactPrimitiveIntersect(int kind, int first, int terms, vec3 o, vec3 d, "
            "float tMin,\n                             int object, inout ExactHit hit)\n{\n";
     int fetched = 0;
@@ -98,7 +98,7 @@ std::string exactPrimitiveInterpreter()
             out << "    if (kind == " << code << ") {\n        " << kind->exactSetup << "\n"
                 << "        for (int term = 0; term < terms && loopIterationAllowed(); ++term)\n"
                 << "            "
-                << overSlots(kind->exactTerm, [](int) { return "SHAPE_PARAMETERS[first + term]"; })
+                << overSlots(kind->exactTerm, [](int) { return "SHAPE_PARAMETER(first + term)"; })
                 << "\n        " << kind->exact << tail << "        return;\n    }\n";
             continue;
         }

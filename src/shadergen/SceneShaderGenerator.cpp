@@ -4,6 +4,8 @@
 #include "shadergen/InterpretedSceneCode.h"
 #include "shadergen/ShaderCodes.h"
 #include "shadergen/SpecializedSceneCode.h"
+#include "scene/PrimitiveKinds.h"
+#include "scene/SceneBounds.h"
 
 #include <algorithm>
 #include <sstream>
@@ -31,6 +33,48 @@ bool specializesShapes(ShaderVariant variant)
     return variant == ShaderVariant::Specialized || variant == ShaderVariant::ShapesOnly;
 }
 
+namespace {
+
+std::size_t weightOf(const Shape& shape)
+{
+    std::size_t weight = shape.transform ? 2 : 1;
+    if (const auto* node = std::get_if<CsgNode>(&shape.geometry))
+        for (const Shape& child : node->children)
+            weight += weightOf(child);
+    return weight;
+}
+
+// Whether the interpreter meets `object` exactly (isExactObject, shape_interpreter.glsl): one
+// untransformed primitive of a kind with a closed form that this shape of it trusts, and no
+// sphere light. Anything else is marched.
+bool interpreterMeetsExactly(const SceneObject& object, bool sphereLight,
+                             bool marchBoxesCylindersAndDisks)
+{
+    const PrimitiveKind* kind = primitiveKindOf(object.shape.geometry);
+    return kind != nullptr && !object.shape.transform && kind->exact != nullptr &&
+           kind->metExactly(object.shape.geometry) &&
+           !(kind->marchedOnRequest && marchBoxesCylindersAndDisks) &&
+           !(sphereLight && std::holds_alternative<Sphere>(object.shape.geometry));
+}
+
+}  // namespace
+
+std::size_t shapeCodeWeight(const Scene& scene)
+{
+    std::size_t weight = 0;
+    for (const SceneObject& object : scene.objects)
+        weight += weightOf(object.shape);
+    return weight;
+}
+
+ShaderVariant variantForScene(const Scene& scene, ShaderVariant asked)
+{
+    if (!specializesShapes(asked) || shapeCodeWeight(scene) <= kMostShapeCodeWeight)
+        return asked;
+    return asked == ShaderVariant::Specialized ? ShaderVariant::FeaturesOnly
+                                               : ShaderVariant::General;
+}
+
 ShaderBuild shaderBuild(const settings::RenderSettings& settings)
 {
     ShaderBuild build;
@@ -45,7 +89,7 @@ ShaderBuild shaderBuild(const settings::RenderSettings& settings)
 
 SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& build)
 {
-    const ShaderVariant variant = build.variant;
+    const ShaderVariant variant = variantForScene(scene, build.variant);
     const EnvironmentBinding environment = build.environment;
     SceneShaderCode code;
     code.variant = variant;
@@ -75,6 +119,16 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
         // The interpreter's culled forms leave out object k < 32 where mask bit k is clear.
         for (std::size_t i = 0; i < scene.objects.size(); ++i)
             code.objectCullingBits.push_back(i < kCullingBits ? 1u << i : 0u);
+        std::vector<bool> sphereLight(scene.objects.size(), false);
+        for (const SphereLight& light : sphereLights(scene))
+            sphereLight[static_cast<std::size_t>(light.object)] = true;
+        code.marchesAnything = false;
+        for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+            const bool marched = !interpreterMeetsExactly(scene.objects[i], sphereLight[i],
+                                                          build.marchBoxesCylindersAndDisks);
+            code.objectMarched.push_back(marched);
+            code.marchesAnything = code.marchesAnything || marched;
+        }
     }
     if (build.exactGeometry) {
         code.exactFunctions = generateExactSceneIntersection(scene, code.shapeParameters);
@@ -88,6 +142,16 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
         if (lights[i].kind == LightKind::Environment)
             environmentLight = static_cast<int>(i);
     std::ostringstream out;
+    if (!specialized) {
+        // The general shader reads its objects from buffer textures and finds them through a
+        // hierarchy (shape_interpreter.glsl); the objects without a finite bound come first
+        // in its list of objects, and every query tests them.
+        int unbounded = 0;
+        for (const SceneObject& object : scene.objects)
+            unbounded += boundShape(object.shape).finite ? 0 : 1;
+        define(out, "HIERARCHY_UNBOUNDED_COUNT", unbounded);
+        define(out, "HIERARCHY_HAS_NODES", unbounded < static_cast<int>(scene.objects.size()));
+    }
     define(out, "OBJECT_COUNT", static_cast<int>(scene.objects.size()));
     define(out, "OBJECT_ARRAY_SIZE", std::max<int>(1, scene.objects.size()));
     define(out, "SHAPE_PARAMETER_ARRAY_SIZE", std::max<int>(1, code.shapeParameters.size()));

@@ -24,6 +24,24 @@ bool specializesShapes(ShaderVariant variant);
 // per pixel (scene_data.glsl says why); a larger scene reads them where they are used.
 constexpr std::size_t kMostShapeParametersReadOnce = 256;
 
+// What a scene's shapes weigh in the specialised shader's code: a unit per primitive,
+// transform and CSG operator. The specialised shader's code, and the time its compile takes,
+// grow with it; the general shader's do not.
+std::size_t shapeCodeWeight(const scene::Scene& scene);
+
+// Scenes whose shapes weigh more than this are given the general shader's shapes (with their
+// features still specialised: ShaderVariant::FeaturesOnly), which finds surfaces through a
+// hierarchy over the objects (shadergen/ObjectHierarchy.h) and compiles in the same time
+// whatever the scene. Chosen by measurement (docs/PERFORMANCE.md, "Scenes of many objects"):
+// up to here the specialised shader renders faster than the general one for the time its
+// compile takes; beyond, its compile alone outweighs a short render. Every classic scene
+// weighs less.
+constexpr std::size_t kMostShapeCodeWeight = 48;
+
+// The variant a scene is given for the one asked: `asked`, but with the general shader's
+// shapes where the scene weighs more than kMostShapeCodeWeight.
+ShaderVariant variantForScene(const scene::Scene& scene, ShaderVariant asked);
+
 // Where the shader takes the environment's kind from. A specialised shader builds it in;
 // the window reads it from a uniform so that its panel can switch the environment off
 // without a recompile (the general shader always does).
@@ -60,6 +78,10 @@ struct SceneShaderCode {
     std::vector<glm::ivec4> shapeProgram;  // General only
     std::vector<int> objectProgramStart;   // General only: per object
     std::vector<glm::vec4> objectBounds;   // General only: per object, radius < 0 for none
+    // General only: per object, whether rays march it (the interpreter meets the others
+    // exactly: isExactObject, shape_interpreter.glsl); the hierarchy's culled walk skips
+    // nodes that hold no marched object.
+    std::vector<bool> objectMarched;
     // Per object: the culling-mask bit that leaves the whole object out of a culled distance
     // (ray_culling.glsl), or 0 where none does.
     std::vector<std::uint32_t> objectCullingBits;
