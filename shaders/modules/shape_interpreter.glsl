@@ -56,27 +56,33 @@ bool mayBeNearer(int object, vec3 p, float known)
     return bound.w < 0.0 || sdSphere(p - bound.xyz, bound.w) < known;
 }
 
-// Whether the ray (origin, 1 / direction) crosses node's box within [tMin, tMax]; a ray along
-// a face does. Zero direction components are replaced by a tiny number of their sign
-// (hierarchyInverse), so that no 0 * infinity makes a NaN.
-bool rayMeetsNode(int node, vec3 origin, vec3 inverseDirection, float tMin, float tMax)
+// Whether the ray crosses node's box within [tMin, tMax]; a ray along a face does. A
+// direction component below 1e-30 counts as zero (hierarchyInverse): that slab holds the ray
+// all along or never (its planes' parameters would be 0 for an origin on a face, and the
+// interval [0, 0] lose the ray). shadergen/ObjectHierarchy.cpp's rayMeetsBox is the same test.
+bool rayMeetsNode(int node, vec3 origin, vec3 inverseDirection, vec3 parallel, float tMin,
+                  float tMax)
 {
-    vec3 t0 = (texelFetch(uHierarchyBoxes, HIERARCHY_BOXES_START + 2 * node).xyz - origin) *
-              inverseDirection;
-    vec3 t1 = (texelFetch(uHierarchyBoxes, HIERARCHY_BOXES_START + 2 * node + 1).xyz - origin) *
-              inverseDirection;
-    vec3 near = min(t0, t1);
-    vec3 far = max(t0, t1);
+    vec3 lower = texelFetch(uHierarchyBoxes, HIERARCHY_BOXES_START + 2 * node).xyz;
+    vec3 upper = texelFetch(uHierarchyBoxes, HIERARCHY_BOXES_START + 2 * node + 1).xyz;
+    vec3 t0 = (lower - origin) * inverseDirection;
+    vec3 t1 = (upper - origin) * inverseDirection;
+    vec3 inside = step(lower, origin) * step(origin, upper);
+    vec3 near = mix(min(t0, t1), mix(vec3(FLOAT_MAX), vec3(-FLOAT_MAX), inside), parallel);
+    vec3 far = mix(max(t0, t1), mix(vec3(-FLOAT_MAX), vec3(FLOAT_MAX), inside), parallel);
     return max(max(near.x, near.y), max(near.z, tMin)) <=
            min(min(far.x, far.y), min(far.z, tMax));
 }
 
-vec3 hierarchyInverse(vec3 direction)
+// 1 where the direction's component counts as zero.
+vec3 hierarchyParallel(vec3 direction)
 {
-    vec3 tiny = vec3(1e-30);
-    vec3 safe = mix(direction, mix(-tiny, tiny, step(0.0, direction)),
-                    lessThanEqual(abs(direction), tiny));
-    return 1.0 / safe;
+    return vec3(lessThan(abs(direction), vec3(1e-30)));
+}
+
+vec3 hierarchyInverse(vec3 direction, vec3 parallel)
+{
+    return 1.0 / mix(direction, vec3(1.0), parallel);
 }
 
 // The distance from p to node's box (0 inside it).
@@ -238,11 +244,12 @@ void exactSurfacesIntersect(vec3 origin, vec3 direction, float tMin, int only, i
     }
     for (int k = 0; k < HIERARCHY_UNBOUNDED_COUNT && loopIterationAllowed(); ++k)
         exactObjectIntersect(listedObject(k), origin, direction, tMin, hit);
-    vec3 inverseDirection = hierarchyInverse(direction);
+    vec3 parallel = hierarchyParallel(direction);
+    vec3 inverseDirection = hierarchyInverse(direction, parallel);
     int node = HIERARCHY_HAS_NODES != 0 ? 0 : -1;
     while (node >= 0 && loopIterationAllowed()) {
         ivec4 link = hierarchyLink(node);
-        if (!rayMeetsNode(node, origin, inverseDirection, tMin, hit.t)) {
+        if (!rayMeetsNode(node, origin, inverseDirection, parallel, tMin, hit.t)) {
             node = link.x;
             continue;
         }

@@ -139,7 +139,7 @@ ObjectHierarchy buildObjectHierarchy(const std::vector<HierarchyObject>& objects
         const Task task = tasks.back();
         tasks.pop_back();
         const int index = static_cast<int>(hierarchy.nodes.size());
-        if (checkpoint && index % 4096 == 4095)
+        if (checkpoint && index % 1024 == 0)
             checkpoint();
         if (task.secondChild)
             secondChild[task.parent] = index;
@@ -171,25 +171,44 @@ ObjectHierarchy buildObjectHierarchy(const std::vector<HierarchyObject>& objects
     return hierarchy;
 }
 
+namespace {
+
+// Components this small count as zero: the ray runs parallel to that axis's slabs.
+constexpr float kParallel = 1e-30f;
+
+}  // namespace
+
 glm::vec3 safeInverse(const glm::vec3& direction)
 {
     glm::vec3 inverse;
-    for (int k = 0; k < 3; ++k) {
-        const float d = direction[k];
-        inverse[k] = 1.0f / (std::abs(d) > 1e-30f ? d : std::copysign(1e-30f, d));
-    }
+    for (int k = 0; k < 3; ++k)
+        inverse[k] = std::abs(direction[k]) < kParallel ? 1.0f : 1.0f / direction[k];
     return inverse;
 }
 
-bool rayMeetsBox(const Box& box, const glm::vec3& origin, const glm::vec3& inverseDirection,
-                 float tMin, float tMax)
+bool rayMeetsBox(const Box& box, const glm::vec3& origin, const glm::vec3& direction,
+                 const glm::vec3& inverseDirection, float tMin, float tMax)
 {
-    const glm::vec3 t0 = (box.lower - origin) * inverseDirection;
-    const glm::vec3 t1 = (box.upper - origin) * inverseDirection;
-    const glm::vec3 near = glm::min(t0, t1);
-    const glm::vec3 far = glm::max(t0, t1);
-    const float enter = std::max(std::max(near.x, near.y), std::max(near.z, tMin));
-    const float leave = std::min(std::min(far.x, far.y), std::min(far.z, tMax));
+    float enter = tMin;
+    float leave = tMax;
+    for (int k = 0; k < 3; ++k) {
+        float near;
+        float far;
+        if (std::abs(direction[k]) < kParallel) {
+            // Parallel to the slab: inside it all along, or never. (Its planes' parameters
+            // would be 0 for an origin on a face, and the interval [0, 0] lose the ray.)
+            const bool inside = box.lower[k] <= origin[k] && origin[k] <= box.upper[k];
+            near = inside ? -FLT_MAX : FLT_MAX;
+            far = inside ? FLT_MAX : -FLT_MAX;
+        } else {
+            const float t0 = (box.lower[k] - origin[k]) * inverseDirection[k];
+            const float t1 = (box.upper[k] - origin[k]) * inverseDirection[k];
+            near = std::min(t0, t1);
+            far = std::max(t0, t1);
+        }
+        enter = std::max(enter, near);
+        leave = std::min(leave, far);
+    }
     return enter <= leave;
 }
 
@@ -203,7 +222,7 @@ float traverseRay(const ObjectHierarchy& hierarchy, const glm::vec3& origin,
     int node = hierarchy.nodes.empty() ? -1 : 0;
     while (node >= 0) {
         const HierarchyNode& n = hierarchy.nodes[node];
-        if (!rayMeetsBox(n.bounds, origin, inverse, tMin, tMax)) {
+        if (!rayMeetsBox(n.bounds, origin, direction, inverse, tMin, tMax)) {
             node = n.skip;
             continue;
         }

@@ -55,19 +55,19 @@ constexpr int kMostObjectsPerLeaf = 4;
 // The candidate split planes per axis of the binned SAH build.
 constexpr int kSahBins = 12;
 
-// Builds the hierarchy. `checkpoint`, where given, is called every few thousand nodes: it may
-// throw to abandon the build (an interrupt during set-up).
+// Builds the hierarchy. `checkpoint`, where given, is called before the first node and every
+// 1024 nodes after: it may throw to abandon the build (an interrupt during set-up).
 ObjectHierarchy buildObjectHierarchy(const std::vector<HierarchyObject>& objects,
                                      const std::function<void()>& checkpoint = {});
 
 // --- the shader's traversals, on the host (tests compare them with a loop over every object) --
 
-// The ray's parameter interval within `box`, clipped to [tMin, tMax]; false where it is empty.
-// Inclusive of the faces: a ray along a face meets the box. Zero direction components are
-// taken as a tiny number of their sign, as the shader does.
-bool rayMeetsBox(const Box& box, const glm::vec3& origin, const glm::vec3& inverseDirection,
-                 float tMin, float tMax);
-// 1 / direction with zero components replaced (see rayMeetsBox).
+// Whether the ray's parameter interval within `box`, clipped to [tMin, tMax], is not empty.
+// Inclusive of the faces: a ray along a face meets the box. A direction component below 1e-30
+// counts as zero: that slab holds the ray all along or never.
+bool rayMeetsBox(const Box& box, const glm::vec3& origin, const glm::vec3& direction,
+                 const glm::vec3& inverseDirection, float tMin, float tMax);
+// 1 / direction, with 1 for the components rayMeetsBox counts as zero.
 glm::vec3 safeInverse(const glm::vec3& direction);
 
 // Visits, in the shader's order, every object whose leaf box the ray crosses within
