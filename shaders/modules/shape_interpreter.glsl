@@ -37,6 +37,13 @@ uniform isamplerBuffer uHierarchyLinks;
 #define HIERARCHY_BOXES_START OBJECT_COUNT
 #define HIERARCHY_LINKS_START ((OBJECT_COUNT + 3) / 4)
 
+// The loop over the unbounded objects counts against the loop budget (constants.glsl) only
+// where it may run more than four times; a leaf's loop never does (kMostObjectsPerLeaf is 4).
+bool unboundedIterationAllowed()
+{
+    return HIERARCHY_UNBOUNDED_COUNT <= 4 || loopIterationAllowed();
+}
+
 // The k-th entry of the objects' list.
 int listedObject(int k)
 {
@@ -184,11 +191,17 @@ void considerObject(int object, vec3 p, bool culled, uint mask, inout float d, i
     }
 }
 
+// A culled query that finds nothing (every marched object left out: rays outside a sphere
+// light in a scene of shapes met exactly) answers a large finite distance, on which a march
+// steps out of the scene: FLOAT_MAX, over-relaxed, would overflow, and the march spin through
+// its budget on NaN (the specialised shader ends such a march before it starts).
+const float kNothingMarched = 1e30;
+
 float hierarchyDistance(vec3 p, bool culled, uint mask, out int nearest)
 {
-    float d = FLOAT_MAX;
+    float d = culled ? kNothingMarched : FLOAT_MAX;
     nearest = -1;
-    for (int k = 0; k < HIERARCHY_UNBOUNDED_COUNT && loopIterationAllowed(); ++k)
+    for (int k = 0; k < HIERARCHY_UNBOUNDED_COUNT && unboundedIterationAllowed(); ++k)
         considerObject(listedObject(k), p, culled, mask, d, nearest);
     int node = HIERARCHY_HAS_NODES != 0 ? 0 : -1;
     while (node >= 0 && loopIterationAllowed()) {
@@ -198,7 +211,7 @@ float hierarchyDistance(vec3 p, bool culled, uint mask, out int nearest)
             node = link.x;
             continue;
         }
-        for (int k = link.y; k < link.y + link.z && loopIterationAllowed(); ++k)
+        for (int k = link.y; k < link.y + link.z; ++k)  // at most kMostObjectsPerLeaf: uncounted
             considerObject(listedObject(k), p, culled, mask, d, nearest);
         node = link.z > 0 ? link.x : node + 1;
     }
@@ -242,7 +255,7 @@ void exactSurfacesIntersect(vec3 origin, vec3 direction, float tMin, int only, i
         exactObjectIntersect(only, origin, direction, tMin, hit);
         return;
     }
-    for (int k = 0; k < HIERARCHY_UNBOUNDED_COUNT && loopIterationAllowed(); ++k)
+    for (int k = 0; k < HIERARCHY_UNBOUNDED_COUNT && unboundedIterationAllowed(); ++k)
         exactObjectIntersect(listedObject(k), origin, direction, tMin, hit);
     vec3 parallel = hierarchyParallel(direction);
     vec3 inverseDirection = hierarchyInverse(direction, parallel);
@@ -253,7 +266,7 @@ void exactSurfacesIntersect(vec3 origin, vec3 direction, float tMin, int only, i
             node = link.x;
             continue;
         }
-        for (int k = link.y; k < link.y + link.z && loopIterationAllowed(); ++k)
+        for (int k = link.y; k < link.y + link.z; ++k)  // at most kMostObjectsPerLeaf: uncounted
             exactObjectIntersect(listedObject(k), origin, direction, tMin, hit);
         node = link.z > 0 ? link.x : node + 1;
     }

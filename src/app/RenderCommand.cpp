@@ -321,8 +321,13 @@ std::string summaryLine(const RenderSetup& setup, const film::Accumulation& accu
                                         renderer.discardedSamples())
             : Progress::summary(renderer.width(), renderer.height(), renderer.samplesPerPixel(),
                                 run.seconds, renderer.discardedSamples(), setup.samplesResumed);
-    char setupText[64];
-    std::snprintf(setupText, sizeof setupText, " (setup %.2f s)", setup.setupSeconds);
+    char setupText[96];
+    if (renderer.hierarchySeconds() > 0.0)
+        // Of the set-up, what building the hierarchy over the objects took.
+        std::snprintf(setupText, sizeof setupText, " (setup %.2f s, hierarchy %.3f s)",
+                      setup.setupSeconds, renderer.hierarchySeconds());
+    else
+        std::snprintf(setupText, sizeof setupText, " (setup %.2f s)", setup.setupSeconds);
     return summary + setupText + " [" +
            describeRenderingDevice(setup.context->identity(), renderer.kernel()) + "]";
 }
@@ -427,7 +432,23 @@ int finishRender(RenderSetup& setup, const CommandLine& line, const RenderRun& r
 int runRender(const CommandLine& commandLine, const InterruptWatch& interrupt)
 {
     CommandLine line = commandLine;
-    RenderSetup setup = prepareRender(line);
+    // Ctrl-C during the set-up (the hierarchy over 100,000 objects takes a second or more)
+    // ends it at the next step (render::setUpCheckpoint) rather than after the compile.
+    struct SetUpInterrupted {};
+    render::setSetUpCheckpoint([&interrupt] {
+        if (interrupt.requested())
+            throw SetUpInterrupted{};
+    });
+    RenderSetup setup;
+    try {
+        setup = prepareRender(line);
+    } catch (const SetUpInterrupted&) {
+        render::setSetUpCheckpoint({});
+        std::cout << "interrupted during the set-up: nothing rendered, nothing written"
+                  << std::endl;
+        return kExitInterrupted;
+    }
+    render::setSetUpCheckpoint({});
     const RenderRun run = setup.context->hasWindow() ? runInWindow(setup, line, interrupt)
                                                      : runBatch(setup, line, interrupt);
     // A render with an end (SECONDS or --spp) stopped before it by Ctrl-C or by closing its
