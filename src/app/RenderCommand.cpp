@@ -321,11 +321,13 @@ std::string summaryLine(const RenderSetup& setup, const film::Accumulation& accu
                                         renderer.discardedSamples())
             : Progress::summary(renderer.width(), renderer.height(), renderer.samplesPerPixel(),
                                 run.seconds, renderer.discardedSamples(), setup.samplesResumed);
-    char setupText[96];
-    if (renderer.hierarchySeconds() > 0.0)
-        // Of the set-up, what building the hierarchy over the objects took.
-        std::snprintf(setupText, sizeof setupText, " (setup %.2f s, hierarchy %.3f s)",
-                      setup.setupSeconds, renderer.hierarchySeconds());
+    char setupText[128];
+    if (renderer.sceneDataBytes() > 0)
+        // Of the set-up, what building the hierarchy over the objects took, and what the
+        // scene's data takes on the GPU (render/SceneDataBuffers.h).
+        std::snprintf(setupText, sizeof setupText,
+                      " (setup %.2f s, hierarchy %.3f s, scene data %.2f MB)", setup.setupSeconds,
+                      renderer.hierarchySeconds(), renderer.sceneDataBytes() / 1e6);
     else
         std::snprintf(setupText, sizeof setupText, " (setup %.2f s)", setup.setupSeconds);
     return summary + setupText + " [" +

@@ -131,6 +131,8 @@ public:
     double lastSecondsPerSample() const { return lastSecondsPerSample_; }
     // What building the hierarchy over the objects took (0 for specialised shapes).
     double hierarchySeconds() const { return uniforms_.hierarchySeconds; }
+    // What the general shader's scene data takes on the GPU (0 for specialised shapes).
+    std::size_t sceneDataBytes() const { return sceneData_ ? sceneData_->bytes() : 0; }
 
 private:
     ProgressiveRenderer(const KernelChoice& kernel, const scene::Scene& scene, int width,

@@ -122,9 +122,10 @@ TEST_P(RayCulling, RenderAgreesWithTheUnculledRender)
 // it agrees with the specialised shader.
 TEST_P(RayCulling, GeneralShaderThroughTheHierarchyAgreesWithTheSpecialisedShader)
 {
-    // In the closed room one pixel's paths (grazing creeps into the corners, sixteen bounces)
-    // outrun llvmpipe's loop budget (constants.glsl) every time without ray culling: it keeps
-    // no sample, and the comparison refuses an empty pixel.
+    // In the closed room the general shader's render leaves one pixel without a sample and
+    // discards none: its paths are abandoned at llvmpipe's loop budget (constants.glsl) each
+    // time, marching without ray culling; not yet explained further. The comparison refuses
+    // an empty pixel.
     if (GetParam().name == "ClosedRoom")
         GTEST_SKIP() << "one pixel of the general shader's render is left without a sample";
     const scene::Scene scene = sceneFromText(GetParam().scene, GetParam().name + ".in");

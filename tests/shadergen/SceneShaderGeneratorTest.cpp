@@ -462,10 +462,11 @@ TEST(ShaderVariantForScene, TheProjectsScenesStaySpecialisedAndLargeScenesDoNot)
             << entry.path();
     }
     std::string spheres;
-    for (int i = 0; i < 49; ++i)
+    for (int i = 0; i <= static_cast<int>(shadergen::kMostShapeCodeWeight); ++i)
         spheres += "0 0 sphere " + std::to_string(i) + " 0 0 0.4\n";
-    const scene::Scene large = parse(sceneWithObjects(49, spheres));
-    EXPECT_EQ(shadergen::shapeCodeWeight(large), 49u);
+    const scene::Scene large =
+        parse(sceneWithObjects(static_cast<int>(shadergen::kMostShapeCodeWeight) + 1, spheres));
+    EXPECT_EQ(shadergen::shapeCodeWeight(large), shadergen::kMostShapeCodeWeight + 1);
     EXPECT_EQ(shadergen::variantForScene(large, ShaderVariant::Specialized), ShaderVariant::FeaturesOnly);
     EXPECT_EQ(shadergen::variantForScene(large, ShaderVariant::ShapesOnly), ShaderVariant::General);
     EXPECT_EQ(shadergen::variantForScene(large, ShaderVariant::General), ShaderVariant::General);
