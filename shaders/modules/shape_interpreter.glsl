@@ -23,7 +23,9 @@
 //                          none), then per node of the hierarchy its box's lower and upper
 //                          corner (HIERARCHY_BOXES_START)
 //   uHierarchyLinks        the objects' list, four a texel: the unbounded objects
-//                          (HIERARCHY_UNBOUNDED_COUNT) then each leaf's; then per node
+//                          (HIERARCHY_UNBOUNDED_COUNT) then each leaf's, each entry the
+//                          object's index where rays meet it exactly (isExactObject, decided
+//                          on the host alike) and -1 - index where they march it; then per node
 //                          (skip, first, count, holds a marched object) from
 //                          HIERARCHY_LINKS_START
 // The hierarchy (shadergen/ObjectHierarchy.h) is flattened depth first: a query that meets a
@@ -44,10 +46,15 @@ bool unboundedIterationAllowed()
     return HIERARCHY_UNBOUNDED_COUNT <= 4 || loopIterationAllowed();
 }
 
-// The k-th entry of the objects' list.
+// The k-th entry of the objects' list (see above: >= 0 for an object met exactly).
 int listedObject(int k)
 {
     return texelFetch(uHierarchyLinks, k >> 2)[k & 3];
+}
+
+int objectOfEntry(int entry)
+{
+    return entry >= 0 ? entry : -1 - entry;
 }
 
 ivec4 hierarchyLink(int node)
@@ -178,9 +185,10 @@ bool isExactObject(int object)
 // (a point inside a solid still finds the solid it is deepest in). The same minimum as a loop
 // over every object: an object's distance is never below its box's. `culled`: only the
 // marched objects of `mask`, and only nodes that hold one (the distances rays march).
-void considerObject(int object, vec3 p, bool culled, uint mask, inout float d, inout int nearest)
+void considerObject(int entry, vec3 p, bool culled, uint mask, inout float d, inout int nearest)
 {
-    if (culled && (!objectInMask(object, mask) || isExactObject(object)))
+    int object = objectOfEntry(entry);
+    if (culled && (entry >= 0 || !objectInMask(object, mask)))
         return;
     if (!mayBeNearer(object, p, d))
         return;
@@ -237,10 +245,12 @@ RayCulling sceneRayCulling(vec3 origin, vec3 direction, float tolerance0, float 
     return noRayCulling();
 }
 
-void exactObjectIntersect(int object, vec3 origin, vec3 direction, float tMin, inout ExactHit hit)
+// `entry`: an entry of the objects' list.
+void exactObjectIntersect(int entry, vec3 origin, vec3 direction, float tMin, inout ExactHit hit)
 {
-    if (!isExactObject(object))
+    if (entry < 0)
         return;
+    int object = entry;
     ivec4 primitive = SHAPE_INSTRUCTION(objectShapeProgramStart(object));
     exactPrimitiveIntersect(primitive.y, primitive.z, primitive.w, origin, direction, tMin,
                             object, hit);
@@ -252,7 +262,8 @@ void exactObjectIntersect(int object, vec3 origin, vec3 direction, float tMin, i
 void exactSurfacesIntersect(vec3 origin, vec3 direction, float tMin, int only, inout ExactHit hit)
 {
     if (only >= 0) {
-        exactObjectIntersect(only, origin, direction, tMin, hit);
+        exactObjectIntersect(isExactObject(only) ? only : -1 - only, origin, direction, tMin,
+                             hit);
         return;
     }
     for (int k = 0; k < HIERARCHY_UNBOUNDED_COUNT && unboundedIterationAllowed(); ++k)

@@ -140,7 +140,7 @@ std::optional<shadergen::Box> hierarchyBox(const Shape& shape)
 
 // Builds the hierarchy and lays it out for the buffer textures (shape_interpreter.glsl):
 // the objects' list (unbounded objects first, as HIERARCHY_UNBOUNDED_COUNT counts them, then
-// each leaf's) four a texel, then a texel (skip, first, count, holds marched) per node; and
+// each leaf's; a marched object as -1 - its index) four a texel, then a texel (skip, first, count, holds marched) per node; and
 // two box corners per node.
 void packHierarchy(const Scene& scene, const shadergen::SceneShaderCode& code,
                    SceneUniforms& packed)
@@ -156,6 +156,11 @@ void packHierarchy(const Scene& scene, const shadergen::SceneShaderCode& code,
     std::vector<int> list = hierarchy.unbounded;
     const int leavesStart = static_cast<int>(list.size());
     list.insert(list.end(), hierarchy.leafObjects.begin(), hierarchy.leafObjects.end());
+    // A marched object's entry is -1 - its index: the walks tell it from one met exactly
+    // without reading its shape program (shape_interpreter.glsl).
+    for (int& entry : list)
+        if (objects[static_cast<std::size_t>(entry)].marched)
+            entry = -1 - entry;
     list.resize(std::max<std::size_t>(4, (list.size() + 3) / 4 * 4), 0);
     for (std::size_t k = 0; k < list.size(); k += 4)
         packed.hierarchyLinks.emplace_back(list[k], list[k + 1], list[k + 2], list[k + 3]);

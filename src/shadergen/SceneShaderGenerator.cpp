@@ -46,7 +46,8 @@ std::size_t weightOf(const Shape& shape)
 
 // Whether the interpreter meets `object` exactly (isExactObject, shape_interpreter.glsl): one
 // untransformed primitive of a kind with a closed form that this shape of it trusts, and no
-// sphere light. Anything else is marched.
+// sphere light. Anything else is marched. The same rule as the shader's, which reads this
+// answer from the hierarchy's list of objects.
 bool interpreterMeetsExactly(const SceneObject& object, bool sphereLight,
                              bool marchBoxesCylindersAndDisks)
 {
