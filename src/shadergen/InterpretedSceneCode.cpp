@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace shadergen {
@@ -17,12 +18,13 @@ namespace {
 
 // The general shader's distance to one primitive: a branch per kind, the kinds that read
 // fewer parameter vec4s first so that each vec4 is fetched once and only where needed.
-std::string primitiveInterpreter()
+std::string primitiveInterpreter(const std::set<int>* usedKinds)
 {
     const char* const names = "abcdefgh";
     std::vector<const PrimitiveKind*> kinds;
     for (const PrimitiveKind& kind : primitiveKinds())
-        kinds.push_back(&kind);
+        if (usedKinds == nullptr || usedKinds->count(kind.code) != 0)
+            kinds.push_back(&kind);
     std::stable_sort(kinds.begin(), kinds.end(), [](const PrimitiveKind* a, const PrimitiveKind* b) {
         return a->parameterCount < b->parameterCount;
     });
@@ -58,12 +60,12 @@ std::string primitiveInterpreter()
 // The general shader's exact intersections (shape_interpreter.glsl meets a single
 // untransformed primitive exactly where its kind has a closed form): a branch per kind, in
 // world space, from the same descriptions the specialised shader's calls are written from.
-std::string exactPrimitiveInterpreter()
+std::string exactPrimitiveInterpreter(const std::set<int>* usedKinds)
 {
     const char* const names = "abcdefgh";
     std::vector<const PrimitiveKind*> kinds;
     for (const PrimitiveKind& kind : primitiveKinds())
-        if (kind.exact != nullptr)
+        if (kind.exact != nullptr && (usedKinds == nullptr || usedKinds->count(kind.code) != 0))
             kinds.push_back(&kind);
     std::stable_sort(kinds.begin(), kinds.end(), [](const PrimitiveKind* a, const PrimitiveKind* b) {
         return a->parameterCount < b->parameterCount;
@@ -74,6 +76,8 @@ std::string exactPrimitiveInterpreter()
     out << "// Whether rays meet primitive `kind`, its parameters from SHAPE_PARAMETER(first), by "
            "exact\n// intersection (scene/Primitives.h).\n"
            "bool primitiveMetExactly(int kind, int first)\n{\n    return ";
+    if (kinds.empty())
+        out << "false";
     for (std::size_t i = 0; i < kinds.size(); ++i) {
         const PrimitiveKind& kind = *kinds[i];
         std::string test = "kind == " + primitiveCodeName(kind);
@@ -147,8 +151,27 @@ std::string userSdfDispatcher(const std::map<std::string, int>& ids)
 
 }  // namespace
 
-InterpretedScene interpretedScene(const Scene& scene, ShapeCompiler& compiler)
+namespace {
+
+void collectKinds(const Shape& shape, std::set<int>& kinds)
 {
+    if (const auto* node = std::get_if<CsgNode>(&shape.geometry)) {
+        for (const Shape& child : node->children)
+            collectKinds(child, kinds);
+    } else if (const PrimitiveKind* kind = primitiveKindOf(shape.geometry)) {
+        kinds.insert(kind->code);
+    }
+}
+
+}  // namespace
+
+InterpretedScene interpretedScene(const Scene& scene, ShapeCompiler& compiler,
+                                  bool onlyKindsUsed)
+{
+    std::set<int> usedKinds;
+    for (const SceneObject& object : scene.objects)
+        collectKinds(object.shape, usedKinds);
+    const std::set<int>* kinds = onlyKindsUsed ? &usedKinds : nullptr;
     InterpretedScene interpreted;
     for (const SceneObject& object : scene.objects) {
         interpreted.objectProgramStart.push_back(compiler.programSize());
@@ -161,8 +184,8 @@ InterpretedScene interpretedScene(const Scene& scene, ShapeCompiler& compiler)
     }
     // Declared before the interpreter module, which calls them.
     interpreted.functions = userSdfDispatcher(compiler.userSdfIds()) + "\n" +
-                            primitiveInterpreter() + "\n" + csgInterpreter() + "\n" +
-                            exactPrimitiveInterpreter();
+                            primitiveInterpreter(kinds) + "\n" + csgInterpreter() + "\n" +
+                            exactPrimitiveInterpreter(kinds);
     return interpreted;
 }
 

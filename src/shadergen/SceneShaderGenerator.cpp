@@ -113,7 +113,8 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
         code.marchedUnion = code.plan.marchedSurfaceCount >= 2;
         code.sceneFunctions = specializedSceneFunctions(code.plan, compiler.functions());
     } else {
-        InterpretedScene interpreted = interpretedScene(scene, compiler);
+        InterpretedScene interpreted =
+            interpretedScene(scene, compiler, specializesFeatures(variant));
         code.objectProgramStart = std::move(interpreted.objectProgramStart);
         code.objectBounds = std::move(interpreted.objectBounds);
         code.sceneFunctions = std::move(interpreted.functions);
