@@ -90,7 +90,8 @@ ShaderBuild shaderBuild(const settings::RenderSettings& settings)
 
 SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& build)
 {
-    const ShaderVariant variant = variantForScene(scene, build.variant);
+    const ShaderVariant variant =
+        build.shapesByWeight ? variantForScene(scene, build.variant) : build.variant;
     const EnvironmentBinding environment = build.environment;
     SceneShaderCode code;
     code.variant = variant;

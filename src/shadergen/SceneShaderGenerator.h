@@ -33,11 +33,11 @@ std::size_t shapeCodeWeight(const scene::Scene& scene);
 // features still specialised: ShaderVariant::FeaturesOnly), which finds surfaces through a
 // hierarchy over the objects (shadergen/ObjectHierarchy.h) and compiles in the same time
 // whatever the scene. Chosen by measurement (docs/PERFORMANCE.md, "Scenes of many objects"):
-// spheres on a plane at 160x120 on llvmpipe, the specialised shader renders faster and sets
-// up no slower up to about 60 spheres, and both cross there (at 60: 0.08 against 0.07
-// Mpaths/s, set-up 2.1 s against 1.8 s); beyond, its code and its compile keep growing.
-// Every scene the project ships weighs 23 or less.
-constexpr std::size_t kMostShapeCodeWeight = 60;
+// spheres on a plane at 160x120 on llvmpipe, the specialised shader renders faster up to
+// about 30 spheres, and the two cross between 30 and 35 (at 30: 0.35 against 0.32 Mpaths/s,
+// the same wall time; at 35: 0.28 against 0.30, 1.5 s against 1.3 s); beyond, its code and
+// its compile keep growing. Every scene the project ships weighs 23 or less.
+constexpr std::size_t kMostShapeCodeWeight = 32;
 
 // The variant a scene is given for the one asked: `asked`, but with the general shader's
 // shapes where the scene weighs more than kMostShapeCodeWeight.
@@ -103,6 +103,10 @@ struct ShaderBuild {
     // edges and contacts can still be judged against exact intersection on shapes that
     // have one (tests/render/EdgeBiasTest.cpp), and what meeting them exactly saves measured.
     bool marchBoxesCylindersAndDisks = false;
+    // Scenes that weigh more than kMostShapeCodeWeight get the general shader's shapes
+    // (variantForScene); false: the variant asked whatever the scene (tests of the
+    // specialised plan on scenes of many objects).
+    bool shapesByWeight = true;
 };
 
 // What of the settings shapes the shader's code (the rest are uniforms).

@@ -22,10 +22,13 @@ using shadergen::generateSceneShaderCode;
 using shadergen::SceneShaderCode;
 using settings::ShaderVariant;
 
+// Specialised whatever the scene's weight: these tests judge the specialised plan.
 SceneShaderCode specialized(const std::string& objects, int count)
 {
-    return generateSceneShaderCode(parse(sceneWithObjects(count, objects)),
-                                   {ShaderVariant::Specialized});
+    shadergen::ShaderBuild build;
+    build.variant = ShaderVariant::Specialized;
+    build.shapesByWeight = false;
+    return generateSceneShaderCode(parse(sceneWithObjects(count, objects)), build);
 }
 
 int occurrences(const std::string& text, const std::string& pattern)
