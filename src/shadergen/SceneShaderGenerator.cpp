@@ -123,14 +123,24 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
         for (std::size_t i = 0; i < scene.objects.size(); ++i)
             code.objectCullingBits.push_back(i < kCullingBits ? 1u << i : 0u);
         std::vector<bool> sphereLight(scene.objects.size(), false);
-        for (const SphereLight& light : sphereLights(scene))
-            sphereLight[static_cast<std::size_t>(light.object)] = true;
+        // Sphere lights with a culling bit that no ray can be inside (no dielectric, the
+        // camera outside) are met exactly by every ray and never marched: as planScene.
+        std::vector<bool> neverMarched(scene.objects.size(), false);
+        for (const SphereLight& light : sphereLights(scene)) {
+            const auto object = static_cast<std::size_t>(light.object);
+            sphereLight[object] = true;
+            const bool enterable =
+                scene.finishes[scene.objects[object].finish].material() ==
+                    MaterialKind::Dielectric ||
+                glm::length(scene.camera.eye - light.center) < light.radius;
+            neverMarched[object] = object < static_cast<std::size_t>(kCullingBits) && !enterable;
+        }
         code.marchesAnything = false;
         for (std::size_t i = 0; i < scene.objects.size(); ++i) {
             const bool marched = !interpreterMeetsExactly(scene.objects[i], sphereLight[i],
                                                           build.marchBoxesCylindersAndDisks);
             code.objectMarched.push_back(marched);
-            code.marchesAnything = code.marchesAnything || marched;
+            code.marchesAnything = code.marchesAnything || (marched && !neverMarched[i]);
         }
     }
     if (build.exactGeometry) {
