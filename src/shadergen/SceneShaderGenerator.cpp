@@ -44,15 +44,20 @@ std::size_t weightOf(const Shape& shape)
     return weight;
 }
 
-// Whether the interpreter meets `object` exactly (isExactObject, shape_interpreter.glsl): one
-// untransformed primitive of a kind with a closed form that this shape of it trusts, and no
-// sphere light. Anything else is marched. The same rule as the shader's, which reads this
-// answer from the hierarchy's list of objects.
-bool interpreterMeetsExactly(const SceneObject& object, bool sphereLight,
-                             bool marchBoxesCylindersAndDisks)
+// Whether the interpreter meets `object` exactly (isExactObject, shape_interpreter.glsl): a
+// program of one primitive (a transform the compiler folds into the parameters of a kind it
+// maps to itself leaves none), of a kind with a closed form that this shape of it trusts,
+// and no sphere light. Anything else is marched. The same rule as the shader's, which reads
+// this answer from the hierarchy's list of objects.
+bool interpreterMeetsExactly(const SceneObject& object, const std::vector<glm::ivec4>& program,
+                             int start, bool sphereLight, bool marchBoxesCylindersAndDisks)
 {
+    const auto at = static_cast<std::size_t>(start);
+    const bool single = at + 1 < program.size() &&
+                        program[at].x == static_cast<int>(Opcode::Primitive) &&
+                        program[at + 1].x == static_cast<int>(Opcode::End);
     const PrimitiveKind* kind = primitiveKindOf(object.shape.geometry);
-    return kind != nullptr && !object.shape.transform && kind->exact != nullptr &&
+    return single && kind != nullptr && kind->exact != nullptr &&
            kind->metExactly(object.shape.geometry) &&
            !(kind->marchedOnRequest && marchBoxesCylindersAndDisks) &&
            !(sphereLight && std::holds_alternative<Sphere>(object.shape.geometry));
@@ -137,8 +142,9 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
         }
         code.marchesAnything = false;
         for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-            const bool marched = !interpreterMeetsExactly(scene.objects[i], sphereLight[i],
-                                                          build.marchBoxesCylindersAndDisks);
+            const bool marched = !interpreterMeetsExactly(
+                scene.objects[i], code.shapeProgram, code.objectProgramStart[i], sphereLight[i],
+                build.marchBoxesCylindersAndDisks);
             code.objectMarched.push_back(marched);
             code.marchesAnything = code.marchesAnything || (marched && !neverMarched[i]);
         }
