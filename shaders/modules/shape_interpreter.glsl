@@ -217,8 +217,11 @@ float hierarchyDistance(vec3 p, bool culled, uint mask, out int nearest)
     // way to its first marched leaf, however far, and prune little until a near one (a scene
     // of 1,000 objects, a fifth of them marched: 2.5x the paths per second, and no pixel left
     // without a sample). Unculled queries start from the unbounded objects (a floor) and
-    // would pay more for the descent than it saves (22 % on spheres on a plane).
-    int node = culled && HIERARCHY_HAS_NODES != 0 ? 0 : -1;
+    // would pay more for the descent than it saves (22 % on spheres on a plane), and so would
+    // a small hierarchy, whose walk is short anyway: its iterations count against the loop
+    // budget (constants.glsl), which the closed room of tests/render/RayCullingTest.cpp
+    // spends in more pixels with it.
+    int node = culled && OBJECT_COUNT - HIERARCHY_UNBOUNDED_COUNT > 16 ? 0 : -1;
     while (node >= 0 && loopIterationAllowed()) {
         ivec4 link = hierarchyLink(node);
         if (link.z > 0) {
