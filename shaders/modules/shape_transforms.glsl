@@ -5,27 +5,27 @@
 
 vec3 toLocalPoint(vec3 p, int first)
 {
-    vec4 translationAndScale = SHAPE_PARAMETERS[first + 3];
+    vec4 translationAndScale = SHAPE_PARAMETER(first + 3);
     vec3 d = p - translationAndScale.xyz;
-    return vec3(dot(SHAPE_PARAMETERS[first].xyz, d), dot(SHAPE_PARAMETERS[first + 1].xyz, d),
-                dot(SHAPE_PARAMETERS[first + 2].xyz, d)) /
+    return vec3(dot(SHAPE_PARAMETER(first).xyz, d), dot(SHAPE_PARAMETER(first + 1).xyz, d),
+                dot(SHAPE_PARAMETER(first + 2).xyz, d)) /
            translationAndScale.w;
 }
 
 float toWorldDistance(float localDistance, int first)
 {
-    return localDistance * SHAPE_PARAMETERS[first + 3].w;
+    return localDistance * SHAPE_PARAMETER(first + 3).w;
 }
 
 vec3 toLocalDirection(vec3 direction, int first)
 {
-    return vec3(dot(SHAPE_PARAMETERS[first].xyz, direction),
-                dot(SHAPE_PARAMETERS[first + 1].xyz, direction),
-                dot(SHAPE_PARAMETERS[first + 2].xyz, direction));
+    return vec3(dot(SHAPE_PARAMETER(first).xyz, direction),
+                dot(SHAPE_PARAMETER(first + 1).xyz, direction),
+                dot(SHAPE_PARAMETER(first + 2).xyz, direction));
 }
 
 vec3 toWorldDirection(vec3 local, int first)
 {
-    return local.x * SHAPE_PARAMETERS[first].xyz + local.y * SHAPE_PARAMETERS[first + 1].xyz +
-           local.z * SHAPE_PARAMETERS[first + 2].xyz;
+    return local.x * SHAPE_PARAMETER(first).xyz + local.y * SHAPE_PARAMETER(first + 1).xyz +
+           local.z * SHAPE_PARAMETER(first + 2).xyz;
 }

@@ -377,12 +377,22 @@ std::string summaryLine(const RenderSetup& setup, const film::Accumulation& accu
                   " (crop " + film::formatCrop(*crop) + " of " + std::to_string(renderer.width()) +
                   "x" + std::to_string(renderer.height()) + ")";
     }
-    char setupText[96];
+    // Of the set-up, what building the hierarchy over the objects took, and what the scene's
+    // data takes on the GPU (render/SceneDataBuffers.h), where the scene is read as data.
+    std::string hierarchyText;
+    if (renderer.sceneDataBytes() > 0) {
+        char text[96];
+        std::snprintf(text, sizeof text, ", hierarchy %.3f s, scene data %.2f MB",
+                      renderer.hierarchySeconds(), renderer.sceneDataBytes() / 1e6);
+        hierarchyText = text;
+    }
+    char setupText[192];
     if (run.windowSeconds)
-        std::snprintf(setupText, sizeof setupText, " (setup %.2f s; window open %.2f s)",
-                      setup.setupSeconds, *run.windowSeconds);
+        std::snprintf(setupText, sizeof setupText, " (setup %.2f s%s; window open %.2f s)",
+                      setup.setupSeconds, hierarchyText.c_str(), *run.windowSeconds);
     else
-        std::snprintf(setupText, sizeof setupText, " (setup %.2f s)", setup.setupSeconds);
+        std::snprintf(setupText, sizeof setupText, " (setup %.2f s%s)", setup.setupSeconds,
+                      hierarchyText.c_str());
     return summary + setupText + " [" +
            describeRenderingDevice(setup.context->identity(), renderer.kernel()) + "]";
 }
@@ -645,7 +655,23 @@ int finishRender(RenderSetup& setup, const CommandLine& line, const RenderRun& r
 int runRender(const CommandLine& commandLine, const InterruptWatch& interrupt)
 {
     CommandLine line = commandLine;
-    RenderSetup setup = prepareRender(line);
+    // Ctrl-C during the set-up (the hierarchy over 100,000 objects takes a second or more)
+    // ends it at the next step (render::setUpCheckpoint) rather than after the compile.
+    struct SetUpInterrupted {};
+    render::setSetUpCheckpoint([&interrupt] {
+        if (interrupt.requested())
+            throw SetUpInterrupted{};
+    });
+    RenderSetup setup;
+    try {
+        setup = prepareRender(line);
+    } catch (const SetUpInterrupted&) {
+        render::setSetUpCheckpoint({});
+        std::cout << "interrupted during the set-up: nothing rendered, nothing written"
+                  << std::endl;
+        return kExitInterrupted;
+    }
+    render::setSetUpCheckpoint({});
     const RenderRun run = setup.context->hasWindow() ? runInWindow(setup, line, interrupt)
                                                      : runBatch(setup, line, interrupt);
     // A render with an end (SECONDS or --spp) stopped before it by Ctrl-C or by closing its

@@ -107,6 +107,8 @@ void ProgressiveRenderer::generateDriverCode()
     bindPrevious(targets_.previous());
     pigmentTextures_.texture.bind(kPigmentTexturesUnit);
     bindEnvironmentTextures();
+    if (sceneData_)
+        sceneData_->bind();
     program_->trace(targets_.next(), {0, 0, 1, 1}, width(), height(), triangle_);
     // Every uniform the shader declares is set by now: the scene's and the settings' by
     // uploadAll, the draw's by setDrawUniforms, the compute kernel's region by trace.
@@ -139,6 +141,12 @@ void ProgressiveRenderer::uploadAll()
                    {uniforms_, settings_, width(), height(),
                     static_cast<float>(pigmentTextures_.size)},
                    code_);
+    if (shadergen::specializesShapes(code_.variant)) {
+        sceneData_.reset();
+    } else {
+        sceneData_.emplace(uniforms_, code_);
+        SceneDataBuffers::setSamplers(uniforms);
+    }
     uniforms.set("uPreviousEstimate", kEstimateUnit);
     uniforms.set("uPreviousMoments", kMomentsUnit);
     uniforms.set("uPigmentTextures", kPigmentTexturesUnit);
@@ -316,6 +324,8 @@ void ProgressiveRenderer::renderPreview(int divisor, int maxBounces)
     bindPrevious(targets_.previous());
     pigmentTextures_.texture.bind(kPigmentTexturesUnit);
     bindEnvironmentTextures();
+    if (sceneData_)
+        sceneData_->bind();
     program_->trace(targets_.next(), {0, 0, previewWidth, previewHeight}, width(), height(),
                     triangle_);
     uniforms.set("uImageSize",
@@ -385,6 +395,8 @@ bool ProgressiveRenderer::drawFrame(const std::function<bool()>& keepGoing, int 
     bindPrevious(source);
     pigmentTextures_.texture.bind(kPigmentTexturesUnit);
     bindEnvironmentTextures();
+    if (sceneData_)
+        sceneData_->bind();
     tileSampleTargets_.bind(kTileSampleTargetsUnit);
     const PixelRegion traced = tracedRegion();
     const int top = traced.y + traced.height;

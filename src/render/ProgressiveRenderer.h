@@ -8,6 +8,7 @@
 #include "render/PathTracerProgram.h"
 #include "render/PreviewDenoiser.h"
 #include "render/ReloadDecision.h"
+#include "render/SceneDataBuffers.h"
 #include "settings/RenderSettings.h"
 #include "render/ScenePreparation.h"
 #include "render/SceneUniforms.h"
@@ -143,6 +144,10 @@ public:
     double firstFrameSeconds() const { return firstFrameSeconds_; }
     // Duration of the last frame completed, per sample per pixel it added.
     double lastSecondsPerSample() const { return lastSecondsPerSample_; }
+    // What building the hierarchy over the objects took (0 for specialised shapes).
+    double hierarchySeconds() const { return uniforms_.hierarchySeconds; }
+    // What the general shader's scene data takes on the GPU (0 for specialised shapes).
+    std::size_t sceneDataBytes() const { return sceneData_ ? sceneData_->bytes() : 0; }
 
 private:
     ProgressiveRenderer(const KernelChoice& kernel, const scene::Scene& scene, int width,
@@ -178,6 +183,8 @@ private:
     // selection) and its textures.
     std::shared_ptr<const EnvironmentMap> environmentMap_;
     std::optional<EnvironmentMapTextures> environmentTextures_;
+    // The general shader's scene data (units 7 to 11); none for specialised shapes.
+    std::optional<SceneDataBuffers> sceneData_;
     AccumulationTargets targets_;
     ToneMapper toneMapper_;
     gl::VertexArray triangle_;

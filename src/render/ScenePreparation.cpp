@@ -10,13 +10,23 @@ PreparedScene prepareScene(const scene::Scene& scene, const shadergen::ShaderBui
                            const std::filesystem::path& shaderDirectory,
                            settings::PathKernel kernel)
 {
+    // Between the steps, the set-up may be abandoned (render::setUpCheckpoint).
+    auto checkpoint = [] {
+        if (setUpCheckpoint())
+            setUpCheckpoint()();
+    };
     PreparedScene prepared;
     prepared.visible = scene::dropInvisibleObjects(scene);
+    checkpoint();
     prepared.code = generateSceneShaderCode(prepared.visible, build);
+    checkpoint();
     prepared.environmentMap = loadSceneEnvironmentMap(prepared.visible);
+    checkpoint();
     prepared.uniforms =
         packSceneUniforms(prepared.visible, prepared.code, prepared.environmentMap.get());
+    checkpoint();
     prepared.pathTracerSource = assemblePathTracerSource(prepared.code, shaderDirectory, kernel);
+    checkpoint();
     return prepared;
 }
 

@@ -3,9 +3,13 @@
 #include "render/ProgramUniforms.h"
 #include "scene/Lights.h"
 #include "settings/SettingsTable.h"
+#include "shadergen/ObjectHierarchy.h"
 #include "shadergen/SceneRecords.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <optional>
 #include <map>
 
 namespace render {
@@ -114,7 +118,78 @@ bool SceneUniforms::operator==(const SceneUniforms& other) const
            environment.color == other.environment.color &&
            environment.mapPath == other.environment.mapPath &&
            environment.intensity == other.environment.intensity &&
-           environment.rotationDegrees == other.environment.rotationDegrees;
+           environment.rotationDegrees == other.environment.rotationDegrees &&
+           hierarchyBoxes == other.hierarchyBoxes && hierarchyLinks == other.hierarchyLinks;
+}
+
+namespace {
+
+// The object's world-space box for the hierarchy: its bounding sphere's, widened by a little
+// more than float rounding so that the slab test never loses a ray grazing the shape.
+std::optional<shadergen::Box> hierarchyBox(const Shape& shape)
+{
+    const ShapeBound bound = boundShape(shape);
+    if (!bound.finite)
+        return std::nullopt;
+    const float pad = 1e-4f * bound.radius + 1e-6f * glm::length(bound.center) + 1e-7f;
+    shadergen::Box box;
+    box.lower = bound.center - glm::vec3(bound.radius + pad);
+    box.upper = bound.center + glm::vec3(bound.radius + pad);
+    return box;
+}
+
+// Builds the hierarchy and lays it out for the buffer textures (shape_interpreter.glsl):
+// the objects' list (unbounded objects first, as HIERARCHY_UNBOUNDED_COUNT counts them, then
+// each leaf's; a marched object as -1 - its index) four a texel, then a texel (skip, first, count, holds marched) per node; and
+// two box corners per node.
+void packHierarchy(const Scene& scene, const shadergen::SceneShaderCode& code,
+                   SceneUniforms& packed)
+{
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<shadergen::HierarchyObject> objects(scene.objects.size());
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        objects[i].bounds = hierarchyBox(scene.objects[i].shape);
+        objects[i].marched = i < code.objectMarched.size() && code.objectMarched[i];
+    }
+    const shadergen::ObjectHierarchy hierarchy =
+        shadergen::buildObjectHierarchy(objects, setUpCheckpoint());
+    std::vector<int> list = hierarchy.unbounded;
+    const int leavesStart = static_cast<int>(list.size());
+    list.insert(list.end(), hierarchy.leafObjects.begin(), hierarchy.leafObjects.end());
+    // A marched object's entry is -1 - its index: the walks tell it from one met exactly
+    // without reading its shape program (shape_interpreter.glsl).
+    for (int& entry : list)
+        if (objects[static_cast<std::size_t>(entry)].marched)
+            entry = -1 - entry;
+    list.resize(std::max<std::size_t>(4, (list.size() + 3) / 4 * 4), 0);
+    for (std::size_t k = 0; k < list.size(); k += 4)
+        packed.hierarchyLinks.emplace_back(list[k], list[k + 1], list[k + 2], list[k + 3]);
+    for (const shadergen::HierarchyNode& node : hierarchy.nodes) {
+        packed.hierarchyLinks.emplace_back(node.skip, leavesStart + node.first, node.count,
+                                           node.holdsMarched ? 1 : 0);
+        packed.hierarchyBoxes.emplace_back(node.bounds.lower, 0.0f);
+        packed.hierarchyBoxes.emplace_back(node.bounds.upper, 0.0f);
+    }
+    packed.hierarchySeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::function<void()>& checkpointSlot()
+{
+    static std::function<void()> checkpoint;
+    return checkpoint;
+}
+
+}  // namespace
+
+void setSetUpCheckpoint(std::function<void()> checkpoint)
+{
+    checkpointSlot() = std::move(checkpoint);
+}
+
+const std::function<void()>& setUpCheckpoint()
+{
+    return checkpointSlot();
 }
 
 SceneUniforms packSceneUniforms(const Scene& scene, const shadergen::SceneShaderCode& code,
@@ -212,19 +287,19 @@ SceneUniforms packSceneUniforms(const Scene& scene, const shadergen::SceneShader
         std::tan(0.5f * scene.camera.verticalFieldOfViewDegrees * kPi / 180.0f);
     packed.lens = scene.camera.lens.value_or(ThinLens{});
     packed.environment = scene.environment;
+    if (!shadergen::specializesShapes(code.variant))
+        packHierarchy(scene, code, packed);
     return packed;
 }
 
 void uploadUniforms(ProgramUniforms& program, const UniformSources& sources,
                     const shadergen::SceneShaderCode& code)
 {
-    program.setArray("uShapeParameters", code.shapeParameters);
-    if (!shadergen::specializesShapes(code.variant)) {
-        // The interpreter's programs (shape_interpreter.glsl).
-        program.setArray("uShapeProgram", code.shapeProgram);
-        program.setArray("uObjectBounds", code.objectBounds);
+    // The general shader reads these from buffer textures instead (render/SceneDataBuffers.h).
+    if (shadergen::specializesShapes(code.variant)) {
+        program.setArray("uShapeParameters", code.shapeParameters);
+        program.setArray(shadergen::objectRecordLayout().uniform, sources.scene.objects);
     }
-    program.setArray(shadergen::objectRecordLayout().uniform, sources.scene.objects);
     program.setArray(shadergen::pigmentRecordLayout().uniform, sources.scene.pigments);
     program.setArray(shadergen::finishRecordLayout().uniform, sources.scene.finishes);
     program.setArray(shadergen::conductorRecordLayout().uniform, sources.scene.conductors);

@@ -39,6 +39,13 @@ struct SceneUniforms {
     scene::SceneBounds bounds;
     scene::Environment environment;
 
+    // The general shader's hierarchy over the objects (shadergen/ObjectHierarchy.h), laid out
+    // as its buffer textures hold it (shape_interpreter.glsl, render/SceneDataBuffers.h);
+    // empty for a shader with specialised shapes.
+    std::vector<glm::vec4> hierarchyBoxes;   // per node, its box's lower and upper corner
+    std::vector<glm::ivec4> hierarchyLinks;  // the objects' list, four a texel, then per node
+    double hierarchySeconds = 0.0;           // what building it took (not compared)
+
     // Every number equal: uploading the one in place of the other changes nothing.
     bool operator==(const SceneUniforms& other) const;
     bool operator!=(const SceneUniforms& other) const { return !(*this == other); }
@@ -48,6 +55,11 @@ struct SceneUniforms {
 // selection probability needs; nullptr where the scene has none.
 SceneUniforms packSceneUniforms(const scene::Scene& scene, const shadergen::SceneShaderCode& code,
                                 const EnvironmentMap* environmentMap = nullptr);
+
+// Called now and then while the scene is prepared (the hierarchy's build): it may throw to
+// abandon the set-up (the program's interrupt, app/RenderCommand.cpp). None by default.
+void setSetUpCheckpoint(std::function<void()> checkpoint);
+const std::function<void()>& setUpCheckpoint();
 
 // What the uniforms' values come from.
 struct UniformSources {

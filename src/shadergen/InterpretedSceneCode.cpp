@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace shadergen {
@@ -17,12 +18,13 @@ namespace {
 
 // The general shader's distance to one primitive: a branch per kind, the kinds that read
 // fewer parameter vec4s first so that each vec4 is fetched once and only where needed.
-std::string primitiveInterpreter()
+std::string primitiveInterpreter(const std::set<int>* usedKinds)
 {
     const char* const names = "abcdefgh";
     std::vector<const PrimitiveKind*> kinds;
     for (const PrimitiveKind& kind : primitiveKinds())
-        kinds.push_back(&kind);
+        if (usedKinds == nullptr || usedKinds->count(kind.code) != 0)
+            kinds.push_back(&kind);
     std::stable_sort(kinds.begin(), kinds.end(), [](const PrimitiveKind* a, const PrimitiveKind* b) {
         return a->parameterCount < b->parameterCount;
     });
@@ -33,8 +35,8 @@ std::string primitiveInterpreter()
     int fetched = 0;
     auto fetch = [&](int count) {
         for (; fetched < count; ++fetched)
-            out << "    vec4 " << names[fetched] << " = SHAPE_PARAMETERS[first"
-                << (fetched == 0 ? "" : " + " + std::to_string(fetched)) << "];\n";
+            out << "    vec4 " << names[fetched] << " = SHAPE_PARAMETER(first"
+                << (fetched == 0 ? "" : " + " + std::to_string(fetched)) << ");\n";
     };
     fetch(1);  // the user SDF's
     for (const PrimitiveKind* kind : kinds) {
@@ -43,7 +45,7 @@ std::string primitiveInterpreter()
             out << "    if (kind == " << code << ") {\n        float d = FLOAT_MAX;\n"
                 << "        for (int term = 0; term < extra && loopIterationAllowed(); ++term)\n"
                 << "            d = min(d, "
-                << distanceOverSlots(*kind, [](int) { return "SHAPE_PARAMETERS[first + term]"; })
+                << distanceOverSlots(*kind, [](int) { return "SHAPE_PARAMETER(first + term)"; })
                 << ");\n        return d;\n    }\n";
             continue;
         }
@@ -58,22 +60,24 @@ std::string primitiveInterpreter()
 // The general shader's exact intersections (shape_interpreter.glsl meets a single
 // untransformed primitive exactly where its kind has a closed form): a branch per kind, in
 // world space, from the same descriptions the specialised shader's calls are written from.
-std::string exactPrimitiveInterpreter()
+std::string exactPrimitiveInterpreter(const std::set<int>* usedKinds)
 {
     const char* const names = "abcdefgh";
     std::vector<const PrimitiveKind*> kinds;
     for (const PrimitiveKind& kind : primitiveKinds())
-        if (kind.exact != nullptr)
+        if (kind.exact != nullptr && (usedKinds == nullptr || usedKinds->count(kind.code) != 0))
             kinds.push_back(&kind);
     std::stable_sort(kinds.begin(), kinds.end(), [](const PrimitiveKind* a, const PrimitiveKind* b) {
         return a->parameterCount < b->parameterCount;
     });
-    auto slot = [](int k) { return k == 0 ? "SHAPE_PARAMETERS[first]"
-                                          : "SHAPE_PARAMETERS[first + " + std::to_string(k) + "]"; };
+    auto slot = [](int k) { return k == 0 ? "SHAPE_PARAMETER(first)"
+                                          : "SHAPE_PARAMETER(first + " + std::to_string(k) + ")"; };
     std::ostringstream out;
-    out << "// Whether rays meet primitive `kind`, its parameters from SHAPE_PARAMETERS[first], by "
+    out << "// Whether rays meet primitive `kind`, its parameters from SHAPE_PARAMETER(first), by "
            "exact\n// intersection (scene/Primitives.h).\n"
            "bool primitiveMetExactly(int kind, int first)\n{\n    return ";
+    if (kinds.empty())
+        out << "false";
     for (std::size_t i = 0; i < kinds.size(); ++i) {
         const PrimitiveKind& kind = *kinds[i];
         std::string test = "kind == " + primitiveCodeName(kind);
@@ -87,7 +91,7 @@ std::string exactPrimitiveInterpreter()
     out << ";\n}\n\n";
 
     out << "// The first crossing in (tMin, hit.t) of primitive `kind` by the ray (o, d), its\n"
-           "// parameters from SHAPE_PARAMETERS[first] (`terms` of them for a union of terms).\n"
+           "// parameters from SHAPE_PARAMETER(first) (`terms` of them for a union of terms).\n"
            "void exactPrimitiveIntersect(int kind, int first, int terms, vec3 o, vec3 d, "
            "float tMin,\n                             int object, inout ExactHit hit)\n{\n";
     int fetched = 0;
@@ -98,7 +102,7 @@ std::string exactPrimitiveInterpreter()
             out << "    if (kind == " << code << ") {\n        " << kind->exactSetup << "\n"
                 << "        for (int term = 0; term < terms && loopIterationAllowed(); ++term)\n"
                 << "            "
-                << overSlots(kind->exactTerm, [](int) { return "SHAPE_PARAMETERS[first + term]"; })
+                << overSlots(kind->exactTerm, [](int) { return "SHAPE_PARAMETER(first + term)"; })
                 << "\n        " << kind->exact << tail << "        return;\n    }\n";
             continue;
         }
@@ -147,8 +151,27 @@ std::string userSdfDispatcher(const std::map<std::string, int>& ids)
 
 }  // namespace
 
-InterpretedScene interpretedScene(const Scene& scene, ShapeCompiler& compiler)
+namespace {
+
+void collectKinds(const Shape& shape, std::set<int>& kinds)
 {
+    if (const auto* node = std::get_if<CsgNode>(&shape.geometry)) {
+        for (const Shape& child : node->children)
+            collectKinds(child, kinds);
+    } else if (const PrimitiveKind* kind = primitiveKindOf(shape.geometry)) {
+        kinds.insert(kind->code);
+    }
+}
+
+}  // namespace
+
+InterpretedScene interpretedScene(const Scene& scene, ShapeCompiler& compiler,
+                                  bool onlyKindsUsed)
+{
+    std::set<int> usedKinds;
+    for (const SceneObject& object : scene.objects)
+        collectKinds(object.shape, usedKinds);
+    const std::set<int>* kinds = onlyKindsUsed ? &usedKinds : nullptr;
     InterpretedScene interpreted;
     for (const SceneObject& object : scene.objects) {
         interpreted.objectProgramStart.push_back(compiler.programSize());
@@ -161,8 +184,8 @@ InterpretedScene interpretedScene(const Scene& scene, ShapeCompiler& compiler)
     }
     // Declared before the interpreter module, which calls them.
     interpreted.functions = userSdfDispatcher(compiler.userSdfIds()) + "\n" +
-                            primitiveInterpreter() + "\n" + csgInterpreter() + "\n" +
-                            exactPrimitiveInterpreter();
+                            primitiveInterpreter(kinds) + "\n" + csgInterpreter() + "\n" +
+                            exactPrimitiveInterpreter(kinds);
     return interpreted;
 }
 

@@ -18,7 +18,11 @@ struct InterpretedScene {
     std::string functions;                // callUserSdf, primitiveDistance, combine
 };
 
-// Appends each object's program, ended by Opcode::End, through `compiler`.
-InterpretedScene interpretedScene(const scene::Scene& scene, ShapeCompiler& compiler);
+// Appends each object's program, ended by Opcode::End, through `compiler`. `onlyKindsUsed`:
+// the switches over the primitive kinds have a branch for the scene's kinds alone (a shader
+// whose features are specialised: half the general shader's compile for spheres on a
+// plane); otherwise for every kind.
+InterpretedScene interpretedScene(const scene::Scene& scene, ShapeCompiler& compiler,
+                                  bool onlyKindsUsed = false);
 
 }  // namespace shadergen

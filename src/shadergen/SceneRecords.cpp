@@ -15,7 +15,9 @@ const RecordLayout<ObjectRecord>& objectRecordLayout()
             {&ObjectRecord::sphereLight, 0, "z", "objectSphereLight", "the sphere light it is, or -1"},
             {&ObjectRecord::shapeProgramStart, 0, "w", "objectShapeProgramStart",
              "the start of its shape program (general shader only)"},
-        }};
+        },
+        nullptr,
+        "uObjectRecords"};
     return layout;
 }
 
@@ -145,6 +147,7 @@ RecordGlsl glslOf(const RecordLayout<Record>& layout)
     text.parts = layout.parts;
     text.element = layout.integer ? "ivec4" : "vec4";
     text.guard = layout.guard ? layout.guard : "";
+    text.bufferSampler = layout.bufferSampler ? layout.bufferSampler : "";
     for (const RecordField<Record>& field : layout.fields)
         text.fields.push_back(
             {glslTypeOf(field.member), field.accessor, field.part, field.components, field.comment});

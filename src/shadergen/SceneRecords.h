@@ -90,6 +90,9 @@ struct RecordLayout {
     bool integer;             // ivec4s (every field an int) rather than vec4s
     std::vector<RecordField<Record>> fields;
     const char* guard = nullptr;  // a define the table is declared under; nullptr: none
+    // The buffer texture the general shader reads the table from instead (a table that grows
+    // with the scene's objects; render/SceneDataBuffers.h); nullptr: always a uniform array.
+    const char* bufferSampler = nullptr;
 };
 
 const RecordLayout<ObjectRecord>& objectRecordLayout();
@@ -115,6 +118,7 @@ struct RecordGlsl {
     int parts = 1;
     std::string element;  // "vec4" or "ivec4"
     std::string guard;    // empty: none
+    std::string bufferSampler;  // empty: none
     struct Field {
         std::string glslType;
         std::string accessor;

@@ -4,6 +4,8 @@
 #include "shadergen/InterpretedSceneCode.h"
 #include "shadergen/ShaderCodes.h"
 #include "shadergen/SpecializedSceneCode.h"
+#include "scene/PrimitiveKinds.h"
+#include "scene/SceneBounds.h"
 
 #include <algorithm>
 #include <sstream>
@@ -31,6 +33,54 @@ bool specializesShapes(ShaderVariant variant)
     return variant == ShaderVariant::Specialized || variant == ShaderVariant::ShapesOnly;
 }
 
+namespace {
+
+std::size_t weightOf(const Shape& shape)
+{
+    std::size_t weight = shape.transform ? 2 : 1;
+    if (const auto* node = std::get_if<CsgNode>(&shape.geometry))
+        for (const Shape& child : node->children)
+            weight += weightOf(child);
+    return weight;
+}
+
+// Whether the interpreter meets `object` exactly (isExactObject, shape_interpreter.glsl): a
+// program of one primitive (a transform the compiler folds into the parameters of a kind it
+// maps to itself leaves none), of a kind with a closed form that this shape of it trusts,
+// and no sphere light. Anything else is marched. The same rule as the shader's, which reads
+// this answer from the hierarchy's list of objects.
+bool interpreterMeetsExactly(const SceneObject& object, const std::vector<glm::ivec4>& program,
+                             int start, bool sphereLight, bool marchBoxesCylindersAndDisks)
+{
+    const auto at = static_cast<std::size_t>(start);
+    const bool single = at + 1 < program.size() &&
+                        program[at].x == static_cast<int>(Opcode::Primitive) &&
+                        program[at + 1].x == static_cast<int>(Opcode::End);
+    const PrimitiveKind* kind = primitiveKindOf(object.shape.geometry);
+    return single && kind != nullptr && kind->exact != nullptr &&
+           kind->metExactly(object.shape.geometry) &&
+           !(kind->marchedOnRequest && marchBoxesCylindersAndDisks) &&
+           !(sphereLight && std::holds_alternative<Sphere>(object.shape.geometry));
+}
+
+}  // namespace
+
+std::size_t shapeCodeWeight(const Scene& scene)
+{
+    std::size_t weight = 0;
+    for (const SceneObject& object : scene.objects)
+        weight += weightOf(object.shape);
+    return weight;
+}
+
+ShaderVariant variantForScene(const Scene& scene, ShaderVariant asked)
+{
+    if (!specializesShapes(asked) || shapeCodeWeight(scene) <= kMostShapeCodeWeight)
+        return asked;
+    return asked == ShaderVariant::Specialized ? ShaderVariant::FeaturesOnly
+                                               : ShaderVariant::General;
+}
+
 ShaderBuild shaderBuild(const settings::RenderSettings& settings)
 {
     ShaderBuild build;
@@ -46,7 +96,8 @@ ShaderBuild shaderBuild(const settings::RenderSettings& settings)
 
 SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& build)
 {
-    const ShaderVariant variant = build.variant;
+    const ShaderVariant variant =
+        build.shapesByWeight ? variantForScene(scene, build.variant) : build.variant;
     const EnvironmentBinding environment = build.environment;
     SceneShaderCode code;
     code.variant = variant;
@@ -69,13 +120,35 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
         code.marchedUnion = code.plan.marchedSurfaceCount >= 2;
         code.sceneFunctions = specializedSceneFunctions(code.plan, compiler.functions());
     } else {
-        InterpretedScene interpreted = interpretedScene(scene, compiler);
+        InterpretedScene interpreted =
+            interpretedScene(scene, compiler, specializesFeatures(variant));
         code.objectProgramStart = std::move(interpreted.objectProgramStart);
         code.objectBounds = std::move(interpreted.objectBounds);
         code.sceneFunctions = std::move(interpreted.functions);
         // The interpreter's culled forms leave out object k < 32 where mask bit k is clear.
         for (std::size_t i = 0; i < scene.objects.size(); ++i)
             code.objectCullingBits.push_back(i < kCullingBits ? 1u << i : 0u);
+        std::vector<bool> sphereLight(scene.objects.size(), false);
+        // Sphere lights with a culling bit that no ray can be inside (no dielectric, the
+        // camera outside) are met exactly by every ray and never marched: as planScene.
+        std::vector<bool> neverMarched(scene.objects.size(), false);
+        for (const SphereLight& light : sphereLights(scene)) {
+            const auto object = static_cast<std::size_t>(light.object);
+            sphereLight[object] = true;
+            const bool enterable =
+                scene.finishes[scene.objects[object].finish].material() ==
+                    MaterialKind::Dielectric ||
+                glm::length(scene.camera.eye - light.center) < light.radius;
+            neverMarched[object] = object < static_cast<std::size_t>(kCullingBits) && !enterable;
+        }
+        code.marchesAnything = false;
+        for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+            const bool marched = !interpreterMeetsExactly(
+                scene.objects[i], code.shapeProgram, code.objectProgramStart[i], sphereLight[i],
+                build.marchBoxesCylindersAndDisks);
+            code.objectMarched.push_back(marched);
+            code.marchesAnything = code.marchesAnything || (marched && !neverMarched[i]);
+        }
     }
     if (build.exactGeometry) {
         code.exactFunctions = generateExactSceneIntersection(scene, code.shapeParameters);
@@ -89,6 +162,16 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
         if (lights[i].kind == LightKind::Environment)
             environmentLight = static_cast<int>(i);
     std::ostringstream out;
+    if (!specialized) {
+        // The general shader reads its objects from buffer textures and finds them through a
+        // hierarchy (shape_interpreter.glsl); the objects without a finite bound come first
+        // in its list of objects, and every query tests them.
+        int unbounded = 0;
+        for (const SceneObject& object : scene.objects)
+            unbounded += boundShape(object.shape).finite ? 0 : 1;
+        define(out, "HIERARCHY_UNBOUNDED_COUNT", unbounded);
+        define(out, "HIERARCHY_HAS_NODES", unbounded < static_cast<int>(scene.objects.size()));
+    }
     define(out, "OBJECT_COUNT", static_cast<int>(scene.objects.size()));
     define(out, "OBJECT_ARRAY_SIZE", std::max<int>(1, scene.objects.size()));
     define(out, "SHAPE_PARAMETER_ARRAY_SIZE", std::max<int>(1, code.shapeParameters.size()));

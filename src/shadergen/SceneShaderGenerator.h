@@ -24,6 +24,25 @@ bool specializesShapes(ShaderVariant variant);
 // per pixel (scene_data.glsl says why); a larger scene reads them where they are used.
 constexpr std::size_t kMostShapeParametersReadOnce = 256;
 
+// What a scene's shapes weigh in the specialised shader's code: a unit per primitive,
+// transform and CSG operator. The specialised shader's code, and the time its compile takes,
+// grow with it; the general shader's do not.
+std::size_t shapeCodeWeight(const scene::Scene& scene);
+
+// Scenes whose shapes weigh more than this are given the general shader's shapes (with their
+// features still specialised: ShaderVariant::FeaturesOnly), which finds surfaces through a
+// hierarchy over the objects (shadergen/ObjectHierarchy.h) and compiles in the same time
+// whatever the scene. Chosen by measurement (docs/PERFORMANCE.md, "Scenes of many objects"):
+// spheres on a plane at 160x120 on llvmpipe, the specialised shader renders faster up to
+// about 30 spheres, and the two cross between 30 and 35 (at 30: 0.35 against 0.32 Mpaths/s,
+// the same wall time; at 35: 0.28 against 0.30, 1.5 s against 1.3 s); beyond, its code and
+// its compile keep growing. Every scene the project ships weighs 23 or less.
+constexpr std::size_t kMostShapeCodeWeight = 32;
+
+// The variant a scene is given for the one asked: `asked`, but with the general shader's
+// shapes where the scene weighs more than kMostShapeCodeWeight.
+ShaderVariant variantForScene(const scene::Scene& scene, ShaderVariant asked);
+
 // Where the shader takes the environment's kind from. A specialised shader builds it in;
 // the window reads it from a uniform so that its panel can switch the environment off
 // without a recompile (the general shader always does).
@@ -60,6 +79,10 @@ struct SceneShaderCode {
     std::vector<glm::ivec4> shapeProgram;  // General only
     std::vector<int> objectProgramStart;   // General only: per object
     std::vector<glm::vec4> objectBounds;   // General only: per object, radius < 0 for none
+    // General only: per object, whether rays march it (the interpreter meets the others
+    // exactly: isExactObject, shape_interpreter.glsl); the hierarchy's culled walk skips
+    // nodes that hold no marched object.
+    std::vector<bool> objectMarched;
     // Per object: the culling-mask bit that leaves the whole object out of a culled distance
     // (ray_culling.glsl), or 0 where none does.
     std::vector<std::uint32_t> objectCullingBits;
@@ -83,6 +106,10 @@ struct ShaderBuild {
     // Each pixel also accumulates its first-hit albedo, normal and depth (FEATURE_BUFFERS,
     // path_tracer_main.glsl; --feature-buffers).
     bool featureBuffers = false;
+    // Scenes that weigh more than kMostShapeCodeWeight get the general shader's shapes
+    // (variantForScene); false: the variant asked whatever the scene (tests of the
+    // specialised plan on scenes of many objects).
+    bool shapesByWeight = true;
 };
 
 // What of the settings shapes the shader's code (the rest are uniforms).

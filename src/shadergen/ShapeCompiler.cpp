@@ -32,7 +32,7 @@ std::string describeGeometry(const Geometry& geometry)
 
 std::string parameterSlot(int index)
 {
-    return "SHAPE_PARAMETERS[" + std::to_string(index) + "]";
+    return "SHAPE_PARAMETER(" + std::to_string(index) + ")";
 }
 
 ShapeCompiler::ShapeCompiler(std::vector<glm::vec4>& parameters, std::vector<glm::ivec4>& program,

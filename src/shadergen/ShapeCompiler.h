@@ -14,7 +14,8 @@
 
 namespace shadergen {
 
-// "uShapeParameters[i]".
+// "SHAPE_PARAMETER(i)": the uniform array's element i, or the buffer texture's texel i in
+// the general shader (UniformBlock.cpp).
 std::string parameterSlot(int index);
 
 class ShapeCompiler {

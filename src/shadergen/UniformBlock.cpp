@@ -39,7 +39,7 @@ void guarded(std::ostringstream& out, const std::string& guard, Write write)
         out << "#endif\n";
 }
 
-void declareRecords(std::ostringstream& out, const RecordGlsl& record)
+void declareRecords(std::ostringstream& out, const RecordGlsl& record, bool inBuffers)
 {
     const std::string parts = std::to_string(record.parts);
     out << "\n// Per " << record.indexName << ", " << parts << " " << record.element << ":\n";
@@ -49,6 +49,14 @@ void declareRecords(std::ostringstream& out, const RecordGlsl& record)
             if (field.part == part)
                 out << " " << field.accessor << " ." << field.components;
         out << "\n";
+    }
+    if (inBuffers && !record.bufferSampler.empty()) {
+        out << "uniform " << (record.element == "ivec4" ? "isamplerBuffer " : "samplerBuffer ")
+            << record.bufferSampler << ";\n"
+            << "#define " << record.macro << "(" << record.indexName << ", part) texelFetch("
+            << record.bufferSampler << ", " << (record.parts == 1 ? "" : parts + " * ") << "("
+            << record.indexName << ")" << (record.parts == 1 ? "" : " + (part)") << ")\n";
+        return;
     }
     const std::string size =
         record.parts == 1 ? record.countDefine : parts + " * " + record.countDefine;
@@ -64,8 +72,10 @@ void declareRecords(std::ostringstream& out, const RecordGlsl& record)
         << "#endif\n";
 }
 
-void readRecordsOnce(std::ostringstream& out, const RecordGlsl& record)
+void readRecordsOnce(std::ostringstream& out, const RecordGlsl& record, bool inBuffers)
 {
+    if (inBuffers && !record.bufferSampler.empty())
+        return;
     out << "#if " << record.countDefine << " == 1\n";
     if (record.parts == 1)
         out << "    " << copyOf(record.uniform) << "[0] = " << record.uniform << "[0];\n";
@@ -104,6 +114,10 @@ std::string uniformBlock(const std::vector<UniformDeclaration>& scalars,
         if (std::find(modules.begin(), modules.end(), scalar.module) != modules.end())
             used.push_back(&scalar);
     const std::vector<RecordGlsl> records = recordLayoutsForGlsl();
+    // The general shader reads every table that grows with the scene's objects from buffer
+    // textures (render/SceneDataBuffers.h): a uniform array holds a few thousand vec4s at most.
+    const bool inBuffers = std::find(modules.begin(), modules.end(), "shape_interpreter.glsl") !=
+                           modules.end();
 
     std::ostringstream out;
     out << "// The uniforms, each read once per pixel into the copy the modules read (uX into\n"
@@ -119,16 +133,22 @@ std::string uniformBlock(const std::vector<UniformDeclaration>& scalars,
         guarded(out, scalar->guard,
                 [&] { out << scalar->glslType << " " << scalar->copy << ";\n"; });
 
-    out << "\n// Shape parameters: one or more vec4 per primitive or transform, addressed by slot.\n"
-           "uniform vec4 uShapeParameters[SHAPE_PARAMETER_ARRAY_SIZE];\n"
-           "#if SHAPE_PARAMETERS_READ_ONCE\n"
-           "vec4 gShapeParameters[SHAPE_PARAMETER_ARRAY_SIZE];\n"
-           "#define SHAPE_PARAMETERS gShapeParameters\n"
-           "#else\n"
-           "#define SHAPE_PARAMETERS uShapeParameters\n"
-           "#endif\n";
+    out << "\n// Shape parameters: one or more vec4 per primitive or transform, addressed by slot\n"
+           "// (SHAPE_PARAMETER(slot)).\n";
+    if (inBuffers)
+        out << "uniform samplerBuffer uShapeParameterBuffer;\n"
+               "#define SHAPE_PARAMETER(slot) texelFetch(uShapeParameterBuffer, slot)\n";
+    else
+        out << "uniform vec4 uShapeParameters[SHAPE_PARAMETER_ARRAY_SIZE];\n"
+               "#if SHAPE_PARAMETERS_READ_ONCE\n"
+               "vec4 gShapeParameters[SHAPE_PARAMETER_ARRAY_SIZE];\n"
+               "#define SHAPE_PARAMETERS gShapeParameters\n"
+               "#else\n"
+               "#define SHAPE_PARAMETERS uShapeParameters\n"
+               "#endif\n"
+               "#define SHAPE_PARAMETER(slot) SHAPE_PARAMETERS[slot]\n";
     for (const RecordGlsl& record : records)
-        guarded(out, record.guard, [&] { declareRecords(out, record); });
+        guarded(out, record.guard, [&] { declareRecords(out, record, inBuffers); });
 
     out << "\nvoid readUniformsOnce()\n{\n"
            "#if SHAPE_PARAMETERS_READ_ONCE\n"
@@ -136,7 +156,7 @@ std::string uniformBlock(const std::vector<UniformDeclaration>& scalars,
            "        gShapeParameters[i] = uShapeParameters[i];\n"
            "#endif\n";
     for (const RecordGlsl& record : records)
-        guarded(out, record.guard, [&] { readRecordsOnce(out, record); });
+        guarded(out, record.guard, [&] { readRecordsOnce(out, record, inBuffers); });
     for (const UniformDeclaration* scalar : used)
         guarded(out, scalar->guard,
                 [&] { out << "    " << scalar->copy << " = " << scalar->name << ";\n"; });

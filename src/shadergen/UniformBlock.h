@@ -35,7 +35,8 @@ std::vector<UniformDeclaration> settingUniformDeclarations();
 
 // The piece for a shader of `modules` (file names, "sphere_tracing.glsl"): the declarations
 // of `scalars` whose module is among them, the shape parameters, the record tables and
-// their accessors, and readUniformsOnce().
+// their accessors, and readUniformsOnce(). With the general shader's interpreter among the
+// modules, the shape parameters and the object records are read from buffer textures.
 std::string uniformBlock(const std::vector<UniformDeclaration>& scalars,
                          const std::vector<std::string>& modules);
 

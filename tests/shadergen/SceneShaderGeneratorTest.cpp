@@ -4,10 +4,13 @@
 // decides, read here from the plan (shadergen/SceneShaderPlan.h); whether the rays then meet
 // the same surfaces is tested by rendering (RayCullingTest.cpp).
 #include "shadergen/SceneShaderGenerator.h"
+#include "scene/SceneParser.h"
 #include "scene/SceneTestSupport.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <filesystem>
 #include <regex>
 #include <stdexcept>
 #include <vector>
@@ -19,10 +22,13 @@ using shadergen::generateSceneShaderCode;
 using shadergen::SceneShaderCode;
 using settings::ShaderVariant;
 
+// Specialised whatever the scene's weight: these tests judge the specialised plan.
 SceneShaderCode specialized(const std::string& objects, int count)
 {
-    return generateSceneShaderCode(parse(sceneWithObjects(count, objects)),
-                                   {ShaderVariant::Specialized});
+    shadergen::ShaderBuild build;
+    build.variant = ShaderVariant::Specialized;
+    build.shapesByWeight = false;
+    return generateSceneShaderCode(parse(sceneWithObjects(count, objects)), build);
 }
 
 int occurrences(const std::string& text, const std::string& pattern)
@@ -434,4 +440,42 @@ TEST(KindCodesInTheShader, TheGeneralShaderCombinesByEveryOperatorsCode)
 }
 
 }  // namespace
+// Scenes whose shapes weigh more than kMostShapeCodeWeight get the general shader's shapes
+// (found through the hierarchy over the objects); the scenes the project ships stay
+// specialised, their images as they were.
+TEST(ShaderVariantForScene, TheProjectsScenesStaySpecialisedAndLargeScenesDoNot)
+{
+    namespace fs = std::filesystem;
+    for (const fs::directory_entry& entry :
+         fs::directory_iterator(fs::path(RAYTRACER_SOURCE_DIR) / "scenes")) {
+        if (entry.path().extension() != ".in")
+            continue;
+        scene::Scene scene;
+        try {
+            scene = scene::parseSceneFile(entry.path());
+        } catch (const std::exception& error) {
+            // A scene that names a file this machine lacks (an environment map of Blender's).
+            std::printf("%-40s not read here: %s\n", entry.path().filename().c_str(), error.what());
+            continue;
+        }
+        std::printf("%-40s %3zu objects, shape code weight %3zu\n",
+                    entry.path().filename().c_str(), scene.objects.size(),
+                    shadergen::shapeCodeWeight(scene));
+        EXPECT_EQ(shadergen::variantForScene(scene, ShaderVariant::Specialized), ShaderVariant::Specialized)
+            << entry.path();
+    }
+    std::string spheres;
+    for (int i = 0; i <= static_cast<int>(shadergen::kMostShapeCodeWeight); ++i)
+        spheres += "0 0 sphere " + std::to_string(i) + " 0 0 0.4\n";
+    const scene::Scene large =
+        parse(sceneWithObjects(static_cast<int>(shadergen::kMostShapeCodeWeight) + 1, spheres));
+    EXPECT_EQ(shadergen::shapeCodeWeight(large), shadergen::kMostShapeCodeWeight + 1);
+    EXPECT_EQ(shadergen::variantForScene(large, ShaderVariant::Specialized), ShaderVariant::FeaturesOnly);
+    EXPECT_EQ(shadergen::variantForScene(large, ShaderVariant::ShapesOnly), ShaderVariant::General);
+    EXPECT_EQ(shadergen::variantForScene(large, ShaderVariant::General), ShaderVariant::General);
+    const SceneShaderCode code = generateSceneShaderCode(large);
+    EXPECT_EQ(code.variant, ShaderVariant::FeaturesOnly);
+    EXPECT_NE(code.defines.find("#define HIERARCHY_UNBOUNDED_COUNT 0\n"), std::string::npos);
+}
+
 }  // namespace scene_tests
