@@ -30,5 +30,16 @@ echo "date: $(date -u '+%F %H:%M UTC'); load before: $(cut -d' ' -f1-3 /proc/loa
 echo "ours: $raytracer (commit $commit${dirty:+, with uncommitted changes})"
 echo "peer: $peer"
 echo
-"$peer/compare.sh" "$raytracer" "$rounds" "$width" "$height"
+# The peer's compare.sh reads our Mpaths/s from the summary line of a run with --quiet, which
+# prints nothing on success now (docs/USAGE.md): it runs a wrapper that drops that option.
+shim="$(mktemp -d)"
+trap 'rm -rf "$shim"' EXIT
+cat >"$shim/raytracer" <<WRAPPER
+#!/usr/bin/env bash
+arguments=()
+for argument in "\$@"; do [ "\$argument" = --quiet ] || arguments+=("\$argument"); done
+exec "$raytracer" "\${arguments[@]}"
+WRAPPER
+chmod +x "$shim/raytracer"
+"$peer/compare.sh" "$shim/raytracer" "$rounds" "$width" "$height"
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"
