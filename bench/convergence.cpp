@@ -215,8 +215,8 @@ void measureConvergence(const scene::Scene& scene, const Reference& reference,
                 name.c_str(), options.width, options.height, run.compileSeconds(),
                 run.warmUpSeconds(), reference.samplesPerPixel, reference.noise.relativeMse,
                 reference.noise.toneMappedRmse);
-    std::printf("%8s %10s %10s %10s %9s %12s %12s %12s %10s\n", "spp", "seconds", "cpu s",
-                "ms/spp", "Mpaths/s", "rel. MSE", "its noise", "tone RMSE", "discarded");
+    std::printf("%8s %10s %10s %10s %9s %12s %12s %12s %10s\n", "spp", "seconds", "cpu s", "ms/spp",
+                "Mpaths/s", "rel. MSE", "its noise", "tone RMSE", "discarded");
     io::Image previous;
     for (int spp = 1; spp <= options.maxSamplesPerPixel; spp *= 2) {
         run.renderTo(spp);
@@ -236,11 +236,10 @@ void measureConvergence(const scene::Scene& scene, const Reference& reference,
                  cell(static_cast<long long>(options.height)), cell(static_cast<long long>(spp)),
                  cell(run.renderSeconds()), cell(run.cpuSeconds()),
                  cell(1e3 * run.renderSeconds() / spp), cell(run.megapathsPerSecond()),
-                 cell(error.relativeMse),
-                 cell(error.toneMappedRmse), noise ? cell(noise->relativeMse) : "",
-                 noise ? cell(noise->toneMappedRmse) : "", cell(reference.noise.relativeMse),
-                 cell(reference.noise.toneMappedRmse), cell(discarded),
-                 cell(run.compileSeconds()), cell(run.warmUpSeconds())});
+                 cell(error.relativeMse), cell(error.toneMappedRmse),
+                 noise ? cell(noise->relativeMse) : "", noise ? cell(noise->toneMappedRmse) : "",
+                 cell(reference.noise.relativeMse), cell(reference.noise.toneMappedRmse),
+                 cell(discarded), cell(run.compileSeconds()), cell(run.warmUpSeconds())});
         previous = image;
     }
 }
@@ -284,8 +283,8 @@ SettingRun runSetting(const scene::Scene& scene, const settings::RenderSettings&
     return result;
 }
 
-void measureSettings(const scene::Scene& scene, const Reference& reference,
-                     const Options& options, CsvFile& csv)
+void measureSettings(const scene::Scene& scene, const Reference& reference, const Options& options,
+                     CsvFile& csv)
 {
     const std::string name = sceneName(scene.sourcePath);
     const int spp = options.settingsSamplesPerPixel;
@@ -322,31 +321,47 @@ void measureSettings(const scene::Scene& scene, const Reference& reference,
             const double msPerSample = 1e3 * result.renderSeconds / spp;
             std::printf("%-16s %8s %9.3f %9.3f %9.3f %9.4f %11.4g %11.4g %11.3g %10.4g "
                         "%+9.4f +-%.4f %9lld%s\n",
-                        sweep.name.c_str(), value.label.c_str(), result.renderSeconds,
-                        msPerSample, 1e3 * result.cpuSeconds / spp, result.megapathsPerSecond,
-                        result.error.relativeMse,
-                        result.noise.relativeMse, excess, result.error.toneMappedRmse,
-                        result.brightnessBias, result.brightnessNoise, result.discarded,
-                        isDefault ? "  (default)" : sameImage ? "  (same image)" : "");
+                        sweep.name.c_str(), value.label.c_str(), result.renderSeconds, msPerSample,
+                        1e3 * result.cpuSeconds / spp, result.megapathsPerSecond,
+                        result.error.relativeMse, result.noise.relativeMse, excess,
+                        result.error.toneMappedRmse, result.brightnessBias, result.brightnessNoise,
+                        result.discarded,
+                        isDefault   ? "  (default)"
+                        : sameImage ? "  (same image)"
+                                    : "");
             std::fflush(stdout);
-            csv.row({name, sweep.name, cell(value.value), value.label, isDefault ? "1" : "0",
-                     sameImage ? "1" : "0", cell(static_cast<long long>(options.width)),
+            csv.row({name,
+                     sweep.name,
+                     cell(value.value),
+                     value.label,
+                     isDefault ? "1" : "0",
+                     sameImage ? "1" : "0",
+                     cell(static_cast<long long>(options.width)),
                      cell(static_cast<long long>(options.height)),
-                     cell(static_cast<long long>(spp)), cell(result.renderSeconds),
-                     cell(result.cpuSeconds), cell(msPerSample),
-                     cell(1e3 * result.cpuSeconds / spp), cell(result.megapathsPerSecond),
-                     cell(result.error.relativeMse), cell(result.error.toneMappedRmse),
-                     cell(result.noise.relativeMse), cell(result.noise.toneMappedRmse),
-                     cell(reference.noise.relativeMse), cell(reference.noise.toneMappedRmse),
-                     cell(excess), cell(result.brightnessBias), cell(result.brightnessNoise),
+                     cell(static_cast<long long>(spp)),
+                     cell(result.renderSeconds),
+                     cell(result.cpuSeconds),
+                     cell(msPerSample),
+                     cell(1e3 * result.cpuSeconds / spp),
+                     cell(result.megapathsPerSecond),
+                     cell(result.error.relativeMse),
+                     cell(result.error.toneMappedRmse),
+                     cell(result.noise.relativeMse),
+                     cell(result.noise.toneMappedRmse),
+                     cell(reference.noise.relativeMse),
+                     cell(reference.noise.toneMappedRmse),
+                     cell(excess),
+                     cell(result.brightnessBias),
+                     cell(result.brightnessNoise),
                      cell(result.discarded),
-                     cell(result.compileSeconds), cell(result.warmUpSeconds)});
+                     cell(result.compileSeconds),
+                     cell(result.warmUpSeconds)});
         }
     }
 }
 
-void measureEqualTime(const scene::Scene& scene, const Reference& reference,
-                      const Options& options, CsvFile& csv)
+void measureEqualTime(const scene::Scene& scene, const Reference& reference, const Options& options,
+                      CsvFile& csv)
 {
     const std::string name = sceneName(scene.sourcePath);
     settings::RenderSettings settings;
@@ -354,8 +369,8 @@ void measureEqualTime(const scene::Scene& scene, const Reference& reference,
     TimedRenderer run(scene, options.budgetWidth, options.budgetHeight, settings,
                       samplesPerFrameFor(options, options.budgetWidth, options.budgetHeight));
     std::printf("\n%s, %dx%d, equal time (reference %d spp; its noise: relative MSE %.3g)\n",
-                name.c_str(), options.budgetWidth, options.budgetHeight,
-                reference.samplesPerPixel, reference.noise.relativeMse);
+                name.c_str(), options.budgetWidth, options.budgetHeight, reference.samplesPerPixel,
+                reference.noise.relativeMse);
     std::printf("%10s %10s %8s %9s %12s %12s\n", "budget s", "used s", "spp", "Mpaths/s",
                 "rel. MSE", "tone RMSE");
     std::vector<double> budgets = options.budgets;
@@ -373,8 +388,8 @@ void measureEqualTime(const scene::Scene& scene, const Reference& reference,
         csv.row({name, cell(static_cast<long long>(options.budgetWidth)),
                  cell(static_cast<long long>(options.budgetHeight)), cell(budget),
                  cell(run.secondsAtLastFrame()), cell(run.cpuSeconds()),
-                 cell(static_cast<long long>(run.samplesPerPixel())),
-                 cell(megapaths), cell(error.relativeMse), cell(error.toneMappedRmse),
+                 cell(static_cast<long long>(run.samplesPerPixel())), cell(megapaths),
+                 cell(error.relativeMse), cell(error.toneMappedRmse),
                  cell(reference.noise.relativeMse), cell(reference.noise.toneMappedRmse)});
     }
 }

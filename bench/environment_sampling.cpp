@@ -33,7 +33,8 @@ struct Render {
     double secondsPerSample = 0.0;
 };
 
-Render renderScene(const scene::Scene& scene, int width, int height, int samples, std::uint64_t seed)
+Render renderScene(const scene::Scene& scene, int width, int height, int samples,
+                   std::uint64_t seed)
 {
     settings::RenderSettings settings;
     settings.seed = seed;
@@ -129,8 +130,8 @@ int main(int argc, char* argv[])
         scene::Scene escaping = sampled;
         escaping.environment.importanceSampled = false;
 
-        std::printf("%s, %dx%d, reference: the map sampled, %d spp, seed 1\n\n",
-                    scenePath.c_str(), width, height, referenceSamples);
+        std::printf("%s, %dx%d, reference: the map sampled, %d spp, seed 1\n\n", scenePath.c_str(),
+                    width, height, referenceSamples);
         const io::Image reference = renderScene(sampled, width, height, referenceSamples, 1).image;
 
         std::printf("| spp | rel RMSE, map sampled (MIS) | rel RMSE, BSDF sampling alone | ratio "
@@ -144,8 +145,7 @@ int main(int argc, char* argv[])
             escapingErrors.push_back(relativeRmse(b, reference));
             const double ratio = escapingErrors.back() / sampledErrors.back();
             std::printf("| %d | %.4g | %.4g | %.2fx | %.0fx | %.4f |\n", spp, sampledErrors.back(),
-                        escapingErrors.back(), ratio, ratio * ratio,
-                        brightness(b) / brightness(a));
+                        escapingErrors.back(), ratio, ratio * ratio, brightness(b) / brightness(a));
             std::fflush(stdout);
         }
         // BSDF sampling's spp for the map sampled's error at the smallest count, on the
@@ -166,7 +166,8 @@ int main(int argc, char* argv[])
 
         std::vector<double> sampledTimes, escapingTimes;
         for (int round = 0; round < rounds; ++round) {
-            sampledTimes.push_back(renderScene(sampled, width, height, timingSamples, 3).secondsPerSample);
+            sampledTimes.push_back(
+                renderScene(sampled, width, height, timingSamples, 3).secondsPerSample);
             escapingTimes.push_back(
                 renderScene(escaping, width, height, timingSamples, 3).secondsPerSample);
         }
@@ -177,9 +178,8 @@ int main(int argc, char* argv[])
                     1e3 * a, 1e3 * b, a / b);
         std::printf("| Mpaths/s | %.3f | %.3f | |\n", pixels / a * 1e-6, pixels / b * 1e-6);
         std::printf("(median of %d alternating rounds of %d spp)\n", rounds, timingSamples);
-        const double equalTime =
-            (escapingErrors.front() / sampledErrors.front()) *
-            (escapingErrors.front() / sampledErrors.front()) * b / a;
+        const double equalTime = (escapingErrors.front() / sampledErrors.front()) *
+                                 (escapingErrors.front() / sampledErrors.front()) * b / a;
         std::printf("\nAt equal time (the error ratio squared, over the cost ratio): %.0fx fewer "
                     "seconds for the same error.\n",
                     equalTime);

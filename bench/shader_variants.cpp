@@ -61,8 +61,7 @@ Measurement measure(const scene::Scene& scene, settings::ShaderVariant variant, 
     do {
         renderer.renderFrame({}, samplesThisFrame);
         samples += samplesThisFrame;
-        elapsed =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (chooseSamples && renderer.lastSecondsPerSample() > 0.0)
             samplesThisFrame =
                 std::clamp(static_cast<int>(0.5 / renderer.lastSecondsPerSample()), 1, 16);
@@ -70,8 +69,7 @@ Measurement measure(const scene::Scene& scene, settings::ShaderVariant variant, 
     result.megapathsPerSecond = static_cast<double>(width) * height * samples / elapsed / 1e6;
     // The first frame is one sample plus the code generation at the first draw.
     result.firstFrameSeconds = renderer.firstFrameSeconds();
-    result.firstDrawSeconds =
-        std::max(0.0, result.firstFrameSeconds - elapsed / samples);
+    result.firstDrawSeconds = std::max(0.0, result.firstFrameSeconds - elapsed / samples);
     return result;
 }
 
@@ -120,8 +118,7 @@ int main(int argc, char* argv[])
                                                      : std::string("the program's choice of");
     std::printf("%s\n%dx%d, at least %.1f s per run at %s paths per pixel per frame, median of "
                 "%d runs\n\n",
-                context.description().c_str(), width, height, seconds, perFrame.c_str(),
-                repeats);
+                context.description().c_str(), width, height, seconds, perFrame.c_str(), repeats);
     const char* header =
         markdown ? "| scene | general Mpaths/s | specialised Mpaths/s | speed-up | specialised "
                    "without culling | culling's speed-up | compile+link "
@@ -133,28 +130,24 @@ int main(int argc, char* argv[])
     std::fputs(header, stdout);
     for (const std::string& path : scenes) {
         const scene::Scene scene = scene::parseSceneFile(path);
-        std::vector<double> generalRate, specialRate, unculledRate, generalCompile,
-            specialCompile, generalFirst, specialFirst, featuresRate, shapesRate;
+        std::vector<double> generalRate, specialRate, unculledRate, generalCompile, specialCompile,
+            generalFirst, specialFirst, featuresRate, shapesRate;
         for (int r = 0; r < repeats; ++r) {
             if (breakdown) {
-                featuresRate.push_back(measure(scene, settings::ShaderVariant::FeaturesOnly,
-                                               width, height, samplesPerFrame, seconds)
+                featuresRate.push_back(measure(scene, settings::ShaderVariant::FeaturesOnly, width,
+                                               height, samplesPerFrame, seconds)
                                            .megapathsPerSecond);
-                shapesRate.push_back(
-                    measure(scene, settings::ShaderVariant::ShapesOnly, width, height,
-                            samplesPerFrame, seconds)
-                        .megapathsPerSecond);
+                shapesRate.push_back(measure(scene, settings::ShaderVariant::ShapesOnly, width,
+                                             height, samplesPerFrame, seconds)
+                                         .megapathsPerSecond);
             }
             // Interleaved so that load from elsewhere on the machine hits both alike.
-            const Measurement general =
-                measure(scene, settings::ShaderVariant::General, width, height, samplesPerFrame,
-                        seconds);
-            const Measurement special =
-                measure(scene, settings::ShaderVariant::Specialized, width, height, samplesPerFrame,
-                        seconds);
-            const Measurement unculled =
-                measure(scene, settings::ShaderVariant::Specialized, width, height, samplesPerFrame,
-                        seconds, false);
+            const Measurement general = measure(scene, settings::ShaderVariant::General, width,
+                                                height, samplesPerFrame, seconds);
+            const Measurement special = measure(scene, settings::ShaderVariant::Specialized, width,
+                                                height, samplesPerFrame, seconds);
+            const Measurement unculled = measure(scene, settings::ShaderVariant::Specialized, width,
+                                                 height, samplesPerFrame, seconds, false);
             generalRate.push_back(general.megapathsPerSecond);
             unculledRate.push_back(unculled.megapathsPerSecond);
             specialRate.push_back(special.megapathsPerSecond);
@@ -172,9 +165,10 @@ int main(int argc, char* argv[])
                         name.c_str(), g, s, s / g, u, s / u, median(generalCompile),
                         median(specialCompile), median(generalFirst), median(specialFirst));
         else
-            std::printf("%-20s  %7.3f  %7.3f  %7.2fx  %8.3f  %6.2fx  %6.2f / %-6.2f  %7.2f / %-7.2f\n",
-                        name.c_str(), g, s, s / g, u, s / u, median(generalCompile),
-                        median(specialCompile), median(generalFirst), median(specialFirst));
+            std::printf(
+                "%-20s  %7.3f  %7.3f  %7.2fx  %8.3f  %6.2fx  %6.2f / %-6.2f  %7.2f / %-7.2f\n",
+                name.c_str(), g, s, s / g, u, s / u, median(generalCompile), median(specialCompile),
+                median(generalFirst), median(specialFirst));
         if (breakdown)
             std::printf("%-20s  features only %.3f, shapes only %.3f Mpaths/s\n", "",
                         median(featuresRate), median(shapesRate));

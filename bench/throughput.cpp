@@ -20,17 +20,17 @@
 // of its busiest pixel; "lanes idle" is 1 - (the pixels' work) / (that cost), a lower bound
 // on the waste (within a frame the busiest pixel changes from segment to segment, which
 // costs more still).
+#include "io/ImageFile.h"
 #include "platform/OsMesaContext.h"
 #include "render/ProgressiveRenderer.h"
-#include "io/ImageFile.h"
 #include "scene/SceneParser.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <ctime>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -69,9 +69,9 @@ WorkPerPath countWork(const scene::Scene& scene, int width, int height, int samp
                     perPath.push_back(counts.at(x, y, channel) / counts.at(x, y, 3));
             std::sort(perPath.begin(), perPath.end());
             std::fprintf(stderr, "%s %s steps per path: median %.1f p90 %.1f p99 %.1f max %.1f\n",
-                         dumpPrefix.c_str(), kinds[channel],
-                         perPath[perPath.size() / 2], perPath[perPath.size() * 9 / 10],
-                         perPath[perPath.size() * 99 / 100], perPath.back());
+                         dumpPrefix.c_str(), kinds[channel], perPath[perPath.size() / 2],
+                         perPath[perPath.size() * 9 / 10], perPath[perPath.size() * 99 / 100],
+                         perPath.back());
         }
     }
     WorkPerPath work;
@@ -99,8 +99,8 @@ WorkPerPath countWork(const scene::Scene& scene, int width, int height, int samp
                 }
             busiest += 8.0 * maximum;
         }
-    for (double* value : {&work.cameraSteps, &work.bounceSteps, &work.shadowSteps,
-                          &work.shadowRays, &work.segments, &work.evaluations})
+    for (double* value : {&work.cameraSteps, &work.bounceSteps, &work.shadowSteps, &work.shadowRays,
+                          &work.segments, &work.evaluations})
         *value /= paths;
     work.lanesIdle = busiest > 0.0 ? 1.0 - lanes / busiest : 0.0;
     return work;
@@ -119,9 +119,8 @@ double megapathsPerSecond(const scene::Scene& scene, int width, int height, doub
         renderer.renderFrame({}, samplesPerFrame);
         samples += samplesPerFrame;
         // The program's own choice: frames of about half a second, at most 16 paths.
-        samplesPerFrame =
-            std::clamp(static_cast<int>(0.5 / std::max(renderer.lastSecondsPerSample(), 1e-6)),
-                       1, 16);
+        samplesPerFrame = std::clamp(
+            static_cast<int>(0.5 / std::max(renderer.lastSecondsPerSample(), 1e-6)), 1, 16);
         elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
     return static_cast<double>(width) * height * samples / elapsed / 1e6;
@@ -174,18 +173,20 @@ int main(int argc, char* argv[])
     std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
     for (const std::string& path : scenes) {
         const scene::Scene scene = scene::parseSceneFile(path);
-        const WorkPerPath work = countWork(scene, width, height, profileSamples, settings,
-                  dumpPrefix.empty() ? "" : dumpPrefix + "-" + std::filesystem::path(path).stem().string());
+        const WorkPerPath work = countWork(
+            scene, width, height, profileSamples, settings,
+            dumpPrefix.empty() ? ""
+                               : dumpPrefix + "-" + std::filesystem::path(path).stem().string());
         const double rate = megapathsPerSecond(scene, width, height, seconds, settings);
         const double steps = work.cameraSteps + work.bounceSteps + work.shadowSteps;
         std::printf("| %s | %.1f | %.1f | %.1f | %.2f | %.2f | %.1f | %.0f %% | %.3f | %.1f |\n",
                     path.c_str(), work.cameraSteps, work.bounceSteps, work.shadowSteps,
-                    work.shadowRays, work.segments, work.evaluations, 100.0 * work.lanesIdle,
-                    rate, 1e3 / (rate * steps));
+                    work.shadowRays, work.segments, work.evaluations, 100.0 * work.lanesIdle, rate,
+                    1e3 / (rate * steps));
     }
     const std::time_t now = std::time(nullptr);
     char date[32];
     std::strftime(date, sizeof date, "%F", std::gmtime(&now));
-    std::printf("(%dx%d; counts per path from %d spp; time from %.0f s of rendering; %s)\n",
-                width, height, profileSamples, seconds, date);
+    std::printf("(%dx%d; counts per path from %d spp; time from %.0f s of rendering; %s)\n", width,
+                height, profileSamples, seconds, date);
 }

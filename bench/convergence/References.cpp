@@ -116,8 +116,7 @@ std::string describeSettings(const settings::RenderSettings& s)
          << " overRelaxation=" << formatNumber(s.overRelaxation)
          << " stepScale=" << formatNumber(s.stepScale) << " maxBounces=" << s.maxBounces
          << " russianRouletteDepth=" << s.russianRouletteDepth
-         << " mis=" << (s.multipleImportanceSampling ? 1 : 0)
-         << " fresnel="
+         << " mis=" << (s.multipleImportanceSampling ? 1 : 0) << " fresnel="
          << (s.dielectricFresnel == settings::FresnelModel::Exact ? "exact" : "schlick")
          << " variant=" << static_cast<int>(s.variant) << " seed=" << s.seed;
     return text.str();
@@ -143,8 +142,7 @@ Reference obtainReference(const scene::Scene& scene, int width, int height,
     const fs::path halfPath = options.cacheDirectory / (stem + "-half.exr");
     const fs::path sidecarPath = options.cacheDirectory / (stem + ".txt");
 
-    const bool cached =
-        fs::exists(fullPath) && fs::exists(halfPath) && fs::exists(sidecarPath);
+    const bool cached = fs::exists(fullPath) && fs::exists(halfPath) && fs::exists(sidecarPath);
     if (cached && !options.refresh) {
         auto recorded = [&](const std::string& name) {
             return sidecarValue(sidecarPath, name).value_or("0");

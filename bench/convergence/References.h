@@ -2,8 +2,8 @@
 // bench_convergence's converged references: rendered once with the default settings and a
 // fixed seed, and cached under a key made of everything that decides their pixels.
 #include "convergence/ImageErrors.h"
-#include "settings/RenderSettings.h"
 #include "scene/Scene.h"
+#include "settings/RenderSettings.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -22,8 +22,8 @@ std::string sceneName(const std::filesystem::path& path);
 
 struct Reference {
     io::Image image;
-    io::Image halfImage;  // the same run at half the samples, for its noise
-    ImageError noise;     // what noise alone leaves in `image`
+    io::Image halfImage;           // the same run at half the samples, for its noise
+    ImageError noise;              // what noise alone leaves in `image`
     double brightnessNoise = 0.0;  // of its sum over the image, relative to the sum
     int samplesPerPixel = 0;
     double renderSeconds = 0.0;

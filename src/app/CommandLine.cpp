@@ -99,7 +99,8 @@ struct Entry {
     bool spelledAs(const std::string& word) const
     {
         const settings::OptionDescription& d = description();
-        return word == d.flag || std::find(d.aliases.begin(), d.aliases.end(), word) != d.aliases.end();
+        return word == d.flag ||
+               std::find(d.aliases.begin(), d.aliases.end(), word) != d.aliases.end();
     }
     void apply(CommandLine& line, const std::string& value) const
     {
@@ -128,9 +129,9 @@ const std::vector<Entry>& renderEntries()
     using namespace settings;
     static const std::vector<Entry> entries = {
 #define SECTION(title) Entry::section(title),
-#define OPTION(field, ...) \
-    Entry::of(bindOption<CommandLine>(#field, [](auto& line) -> auto& { return line.field; }, \
-                                      __VA_ARGS__)),
+#define OPTION(field, ...)                                                                         \
+    Entry::of(bindOption<CommandLine>(                                                             \
+        #field, [](auto& line) -> auto& { return line.field; }, __VA_ARGS__)),
 #define SETTING(Type, field, defaultValue, ...) Entry::of(settingRow(#field)),
 #include "settings/Options.def"
 #undef SECTION
@@ -157,7 +158,8 @@ const std::vector<Entry>& mergeEntries()
             "merge.picture", [](auto& line) -> auto& { return line.merge.picture; },
             option("--png", "FILE", "the tone-mapped picture too"))),
         Entry::of(bindOption<CommandLine>(
-            "merge.statisticsOutput", [](auto& line) -> auto& { return line.merge.statisticsOutput; },
+            "merge.statisticsOutput",
+            [](auto& line) -> auto& { return line.merge.statisticsOutput; },
             option("--stats-output", "FILE", "the merged statistics"))),
         helpEntry(),
     };
@@ -210,7 +212,8 @@ void readArguments(int argc, const char* const argv[], int first, const std::vec
             positional.push_back(argument);
             continue;
         }
-        const std::size_t equals = argument.rfind("--", 0) == 0 ? argument.find('=') : std::string::npos;
+        const std::size_t equals =
+            argument.rfind("--", 0) == 0 ? argument.find('=') : std::string::npos;
         const std::string word = argument.substr(0, equals);
         const auto entry = std::find_if(entries.begin(), entries.end(), [&](const Entry& e) {
             return e.isOption() && e.spelledAs(word);

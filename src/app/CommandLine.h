@@ -38,7 +38,7 @@ struct CommandLine {
     std::filesystem::path scene;
     int width = 640;
     int height = 480;
-    std::optional<double> seconds;   // timed render
+    std::optional<double> seconds;  // timed render
     std::optional<int> samplesPerPixel;
     // --target-error E: stop once the estimated relative RMSE is E (film/AdaptiveSampling.h
     // holds it with --min-spp and --adaptive-tile); --uniform-sampling: every pixel alike.

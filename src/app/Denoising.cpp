@@ -45,11 +45,11 @@ io::OutputImage denoisedOutput(const fs::path& path, const io::Image& denoised,
                                const film::RenderMetadata& metadata, const fs::path& rawFile)
 {
     std::vector<io::ImageAttribute> attributes = film::metadataAttributes(metadata);
-    attributes.push_back({"raytracer:denoised",
-                          "Open Image Denoise (RT filter, HDR, guided by the first-hit albedo "
-                          "and normal; " +
-                              film::denoiserLibrary() + ") from " + rawFile.string() +
-                              ": biased, not to be merged or resumed"});
+    attributes.push_back(
+        {"raytracer:denoised", "Open Image Denoise (RT filter, HDR, guided by the first-hit albedo "
+                               "and normal; " +
+                                   film::denoiserLibrary() + ") from " + rawFile.string() +
+                                   ": biased, not to be merged or resumed"});
     if (io::holdsLinearRadiance(path))
         return {path, denoised, std::move(attributes), {}};
     // The exposure and curve the render records (the same as its raw picture's).

@@ -26,7 +26,7 @@ void ErrorTargetRun::start(render::ProgressiveRenderer& renderer)
     if (adaptive_)
         renderer.setTileSampleTargets(
             film::planAdaptiveSampling(film::Accumulation(renderer.width(), renderer.height()),
-                                         sampling_)
+                                       sampling_)
                 .targets);
 }
 
@@ -35,17 +35,18 @@ bool ErrorTargetRun::judge(const film::Accumulation& accumulation)
 {
     estimate_ = film::estimateRelativeError(accumulation);
     const film::SampleCountSpan span = film::samplesTakenSpan(accumulation);
-    const bool minimumHeld = span.fewest >= std::min(sampling_.minimumSamples,
-                                                     sampling_.sampleLimit > 0
-                                                         ? sampling_.sampleLimit
-                                                         : sampling_.minimumSamples);
+    const bool minimumHeld =
+        span.fewest >= std::min(sampling_.minimumSamples, sampling_.sampleLimit > 0
+                                                              ? sampling_.sampleLimit
+                                                              : sampling_.minimumSamples);
     reached_ = minimumHeld && estimate_ && estimate_->upperBound() <= sampling_.targetError;
     return minimumHeld;
 }
 
 void ErrorTargetRun::noteSamplesAdded(const film::Accumulation& accumulation)
 {
-    const std::size_t pixels = static_cast<std::size_t>(accumulation.width()) * accumulation.height();
+    const std::size_t pixels =
+        static_cast<std::size_t>(accumulation.width()) * accumulation.height();
     if (samplesTakenBefore_.size() != pixels)
         samplesTakenBefore_.assign(pixels, 0.0f);
     mostSamplesAdded_ = 0.0f;
@@ -76,8 +77,8 @@ void ErrorTargetRun::afterFrame(render::ProgressiveRenderer& renderer, double el
     if (estimate_ && !reached_ && minimumHeld) {
         film::AdaptiveSampling aim = sampling_;
         // What the estimate's uncertainty asks beyond the target, and the margin.
-        aim.targetError = kPlanningMargin * sampling_.targetError *
-                          estimate_->relativeError / std::max(estimate_->upperBound(), 1e-30);
+        aim.targetError = kPlanningMargin * sampling_.targetError * estimate_->relativeError /
+                          std::max(estimate_->upperBound(), 1e-30);
         if (adaptive_) {
             film::AdaptivePlan plan = film::planAdaptiveSampling(accumulation, aim);
             // Every tile holds its share but the estimate is not there: the noise grew as it
@@ -130,8 +131,7 @@ std::string ErrorTargetRun::summaryText(const std::string& stop) const
     }
     std::snprintf(text, sizeof text, "error %.3g %% +- %.2g %% (target %.3g %%, %s sampling: %s)",
                   100.0 * estimate_->relativeError, 100.0 * estimate_->uncertainty,
-                  100.0 * sampling_.targetError, sampling,
-                  reached_ ? "reached" : stop.c_str());
+                  100.0 * sampling_.targetError, sampling, reached_ ? "reached" : stop.c_str());
     return text;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
-#include "interaction/ConvergenceHistory.h"
 #include "film/AdaptiveSampling.h"
 #include "film/ConvergenceEstimate.h"
+#include "interaction/ConvergenceHistory.h"
 #include "render/ProgressiveRenderer.h"
 
 #include <optional>

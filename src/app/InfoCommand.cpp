@@ -1,9 +1,9 @@
 #include "app/InfoCommand.h"
 
 #include "app/RenderCommand.h"
-#include "io/ImageFile.h"
 #include "film/RenderFileChecks.h"
 #include "film/RenderMetadata.h"
+#include "io/ImageFile.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,8 +44,8 @@ std::string perPixelSamples(const io::ImageFileContents& file)
         std::snprintf(text, sizeof text, "every pixel holds %.0f (%.0f discarded in all)", most,
                       discardedInAll);
     else
-        std::snprintf(text, sizeof text, "pixels hold %.0f to %.0f (%.0f discarded in all)",
-                      fewest, most, discardedInAll);
+        std::snprintf(text, sizeof text, "pixels hold %.0f to %.0f (%.0f discarded in all)", fewest,
+                      most, discardedInAll);
     return text;
 }
 
@@ -67,9 +67,8 @@ int runInfo(const std::filesystem::path& path)
     std::string channels;
     for (const std::string& name : file.channelNames)
         channels += (channels.empty() ? "" : " ") + name;
-    printLine("file", path.string() + ": " + file.format + ", " +
-                          std::to_string(file.image.width) + "x" +
-                          std::to_string(file.image.height));
+    printLine("file", path.string() + ": " + file.format + ", " + std::to_string(file.image.width) +
+                          "x" + std::to_string(file.image.height));
     printLine("channels", channels);
     if (file.channelIndex("albedo.R") >= 0)
         printLine("feature buffers", "albedo.R/G/B (first-hit albedo), N.X/Y/Z (world-space "
@@ -96,7 +95,8 @@ int runInfo(const std::filesystem::path& path)
     std::snprintf(seconds, sizeof seconds, "%.2f s%s", metadata->renderSeconds,
                   metadata->mergedFrom.empty() ? "" : " (summed over the renders merged)");
     printLine("render time", seconds);
-    printLine("interrupted", metadata->interrupted.empty() ? "no" : "yes: " + metadata->interrupted);
+    printLine("interrupted",
+              metadata->interrupted.empty() ? "no" : "yes: " + metadata->interrupted);
     if (!metadata->mergedFrom.empty()) {
         std::string files;
         for (const std::string& name : metadata->mergedFrom)

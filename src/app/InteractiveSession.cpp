@@ -1,11 +1,11 @@
 #include "app/InteractiveSession.h"
 
-#include "interaction/FramePacing.h"
 #include "app/RenderOutputs.h"
 #include "app/SceneDigest.h"
 #include "app/SceneLoading.h"
 #include "app/Snapshot.h"
 #include "film/ConvergenceEstimate.h"
+#include "interaction/FramePacing.h"
 #include "scene/CameraLine.h"
 #include "scene/SceneBounds.h"
 
@@ -170,8 +170,8 @@ void InteractiveSession::accumulate(interaction::SamplesPerFrame& pacing)
 {
     auto keepGoing = [&] {
         // Input ends a frame between bands, so that the view answers at once.
-        return !interrupt_.requested() && !window_.closeRequested() &&
-               !window_.hasPendingInput() && !reachedEnd();
+        return !interrupt_.requested() && !window_.closeRequested() && !window_.hasPendingInput() &&
+               !reachedEnd();
     };
     // The first frame shows at once, whatever it will cost.
     int samples = renderer_.frames() == 0 ? 1 : pacing.samples();
@@ -210,8 +210,8 @@ void InteractiveSession::updateErrorEstimate()
     if (estimate && line_.targetError) {
         targetReached_ = estimate->upperBound() <= *line_.targetError &&
                          renderer_.samplesPerPixel() >= line_.adaptiveSampling.minimumSamples;
-        secondsToTarget_ = history_.secondsLeftToReach(*line_.targetError, accumulated,
-                                                       estimate->upperBound());
+        secondsToTarget_ =
+            history_.secondsLeftToReach(*line_.targetError, accumulated, estimate->upperBound());
     }
 }
 
@@ -350,8 +350,7 @@ bool InteractiveSession::reloadChangedFiles()
         history_.clear();
         return true;
     } catch (const std::exception& error) {
-        setStatus(std::string("error: ") + error.what() +
-                      " (the last good scene stays on screen)",
+        setStatus(std::string("error: ") + error.what() + " (the last good scene stays on screen)",
                   true);
         return false;
     }
@@ -433,8 +432,7 @@ bool InteractiveSession::showFrame(const std::optional<double>& relativeError)
         readings.elapsedSeconds > 0.0 ? readings.samplesPerPixel / readings.elapsedSeconds : 0.0;
     readings.previewing = renderer_.showsPreview();
     readings.previewDivisor = previewDivisor_;
-    readings.previewFramesPerSecond =
-        previewFrameSeconds_ > 0.0 ? 1.0 / previewFrameSeconds_ : 0.0;
+    readings.previewFramesPerSecond = previewFrameSeconds_ > 0.0 ? 1.0 / previewFrameSeconds_ : 0.0;
     readings.relativeError = relativeError;
     readings.targetError = line_.targetError;
     readings.secondsToTarget = secondsToTarget_;

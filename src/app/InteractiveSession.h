@@ -1,12 +1,12 @@
 #pragma once
 #include "app/CommandLine.h"
+#include "app/Interrupt.h"
+#include "interaction/CameraController.h"
 #include "interaction/ConvergenceHistory.h"
 #include "interaction/FileWatcher.h"
 #include "interaction/FramePacing.h"
-#include "app/Interrupt.h"
 #include "interaction/StatisticsPanel.h"
 #include "platform/GlfwWindowContext.h"
-#include "interaction/CameraController.h"
 #include "render/ProgressiveRenderer.h"
 #include "scene/Scene.h"
 
@@ -89,21 +89,21 @@ private:
     render::ProgressiveRenderer& renderer_;
     const CommandLine& line_;
     const InterruptWatch& interrupt_;
-    scene::Scene fileScene_;  // as last read from the file, its camera the file's
+    scene::Scene fileScene_;   // as last read from the file, its camera the file's
     std::string sceneSha256_;  // of fileScene_'s files, as read
     interaction::CameraController camera_;
     interaction::FileWatcher watcher_;
     interaction::StatisticsPanel panel_;
     interaction::PanelSettings panelSettings_;
     interaction::ConvergenceHistory history_;
-    bool targetReached_ = false;               // --target-error
-    std::optional<double> relativeError_;      // estimated, every kEstimateIntervalSeconds
-    std::optional<double> secondsToTarget_;    // predicted, from history_
+    bool targetReached_ = false;             // --target-error
+    std::optional<double> relativeError_;    // estimated, every kEstimateIntervalSeconds
+    std::optional<double> secondsToTarget_;  // predicted, from history_
     std::string status_;
     bool statusIsError_ = false;
     int previewDivisor_ = 2;
     double previewFrameSeconds_ = 0.0;  // smoothed time of a frame while the view changes
-    Clock::time_point start_;  // of run()
+    Clock::time_point start_;           // of run()
     Clock::time_point accumulationStart_;
     Clock::time_point lastViewChange_;
     Clock::time_point lastIteration_;

@@ -2,10 +2,10 @@
 
 #include "app/RenderCommand.h"
 #include "app/RenderOutputs.h"
+#include "film/RenderFile.h"
 #include "io/OutputFiles.h"
 #include "platform/ContextFactory.h"
 #include "render/AccumulationTargets.h"
-#include "film/RenderFile.h"
 #include "render/ToneMapper.h"
 #include "scene/FileLookup.h"
 
@@ -30,10 +30,9 @@ void refuseOutputsInOneFile(const MergeRequest& request)
     for (std::size_t i = 0; i < outputs.size(); ++i)
         for (std::size_t j = i + 1; j < outputs.size(); ++j)
             if (io::resolveToSameFile(outputs[i].second, outputs[j].second))
-                throw UsageError(std::string(outputs[j].first) + " " +
-                                 outputs[j].second.string() + " names the same file as " +
-                                 outputs[i].first + " " + outputs[i].second.string() +
-                                 ": give different files");
+                throw UsageError(std::string(outputs[j].first) + " " + outputs[j].second.string() +
+                                 " names the same file as " + outputs[i].first + " " +
+                                 outputs[i].second.string() + ": give different files");
 }
 
 // Why the inputs cannot be merged, if they cannot: they must estimate one image (size,
@@ -44,10 +43,10 @@ void refuseMismatches(const std::vector<fs::path>& paths,
     const film::RenderMetadata& first = renders.front().metadata;
     for (std::size_t i = 1; i < renders.size(); ++i)
         if (const auto difference = film::imageDifference(first, renders[i].metadata))
-            throw std::runtime_error(
-                "cannot merge " + paths[0].string() + " and " + paths[i].string() +
-                ": they differ in " + difference->what + ": " + difference->first + " and " +
-                difference->second + ", so their samples estimate different images");
+            throw std::runtime_error("cannot merge " + paths[0].string() + " and " +
+                                     paths[i].string() + ": they differ in " + difference->what +
+                                     ": " + difference->first + " and " + difference->second +
+                                     ", so their samples estimate different images");
     for (std::size_t i = 0; i < renders.size(); ++i)
         for (std::size_t j = i + 1; j < renders.size(); ++j) {
             // Crops that share no pixel share no sample, whatever their seeds.
@@ -56,12 +55,12 @@ void refuseMismatches(const std::vector<fs::path>& paths,
             if (a && b && a->disjointFrom(*b))
                 continue;
             if (const auto overlap = film::firstOverlap(renders[i].metadata.sampleRanges,
-                                                          renders[j].metadata.sampleRanges))
+                                                        renders[j].metadata.sampleRanges))
                 throw std::runtime_error(
                     "cannot merge " + paths[i].string() + " and " + paths[j].string() +
                     ": both hold samples of seed " + std::to_string(overlap->first.seed) +
-                    " with the same indices (" + film::describeSampleRange(overlap->first) +
-                    "; " + film::describeSampleRange(overlap->second) +
+                    " with the same indices (" + film::describeSampleRange(overlap->first) + "; " +
+                    film::describeSampleRange(overlap->second) +
                     "), the same paths twice: render shards with different --seed" +
                     (a || b ? std::string(", or crops (--crop) that share no pixel") : ""));
         }
@@ -95,7 +94,7 @@ void refuseInexactCounts(const film::Accumulation& merged)
 }
 
 film::RenderMetadata mergedMetadata(const std::vector<fs::path>& paths,
-                                      const std::vector<film::RenderFile>& renders)
+                                    const std::vector<film::RenderFile>& renders)
 {
     film::RenderMetadata merged = renders.front().metadata;
     merged.samplesPerPixel = 0;
@@ -201,8 +200,9 @@ int runMerge(const MergeRequest& request, const InterruptWatch& interrupt)
                   << std::endl;
         return kExitInterrupted;
     }
-    io::writeAllOrNothing(renderOutputs(images, request.statisticsOutput, merged, metadata,
-                                        [&] { return toneMappedPicture(merged, metadata.settings); }));
+    io::writeAllOrNothing(renderOutputs(images, request.statisticsOutput, merged, metadata, [&] {
+        return toneMappedPicture(merged, metadata.settings);
+    }));
 
     char numbers[160];
     std::snprintf(numbers, sizeof numbers, "%dx%d, %lld spp", metadata.width, metadata.height,
@@ -210,8 +210,8 @@ int runMerge(const MergeRequest& request, const InterruptWatch& interrupt)
     char seconds[64];
     std::snprintf(seconds, sizeof seconds, "%.2f s of rendering", metadata.renderSeconds);
     std::string line = "merged " + std::to_string(renders.size()) + " renders: " + numbers +
-                       " (seeds " + film::describeSeeds(metadata.sampleRanges) + "), " +
-                       seconds + " -> " + request.output.string();
+                       " (seeds " + film::describeSeeds(metadata.sampleRanges) + "), " + seconds +
+                       " -> " + request.output.string();
     for (std::size_t i = 1; i < images.size(); ++i)
         line += " and " + images[i].string();
     if (request.statisticsOutput)

@@ -52,14 +52,14 @@ std::string progressLine(int samples, double rate, double elapsed, double remain
         std::snprintf(forms[2], sizeof forms[2], "%s", aim.c_str());
     } else if (ends)
         std::snprintf(forms[0], sizeof forms[0],
-                      "%6d spp  %7.2f spp/s  %7.1f s elapsed  %7.1f s left", samples, rate,
-                      elapsed, remaining);
+                      "%6d spp  %7.2f spp/s  %7.1f s elapsed  %7.1f s left", samples, rate, elapsed,
+                      remaining);
     else
-        std::snprintf(forms[0], sizeof forms[0], "%6d spp  %7.2f spp/s  %7.1f s elapsed",
-                      samples, rate, elapsed);
+        std::snprintf(forms[0], sizeof forms[0], "%6d spp  %7.2f spp/s  %7.1f s elapsed", samples,
+                      rate, elapsed);
     if (aim.empty()) {
-        std::snprintf(forms[1], sizeof forms[1], ends ? "%d spp  %.2f spp/s  %.0f s left"
-                                                      : "%d spp  %.2f spp/s  %.0f s",
+        std::snprintf(forms[1], sizeof forms[1],
+                      ends ? "%d spp  %.2f spp/s  %.0f s left" : "%d spp  %.2f spp/s  %.0f s",
                       samples, rate, ends ? remaining : elapsed);
         std::snprintf(forms[2], sizeof forms[2], ends ? "%d spp, %.0f s left" : "%d spp, %.0f s",
                       samples, ends ? remaining : elapsed);
@@ -90,7 +90,8 @@ void Progress::update(int samples, const std::string& aim)
         remaining = remaining < 0.0 ? bySamples : std::min(remaining, bySamples);
     }
     // Asked every time: the terminal may have been resized.
-    const std::string line = progressLine(samples, rate, elapsed, remaining, aim, terminalColumns());
+    const std::string line =
+        progressLine(samples, rate, elapsed, remaining, aim, terminalColumns());
     std::fputs(("\r" + line + "\033[K").c_str(), stderr);
     std::fflush(stderr);
     drawn_ = true;
@@ -116,8 +117,8 @@ std::string Progress::summary(int width, int height, int samples, double seconds
                       samples - samplesResumed);
     char line[240];
     std::snprintf(line, sizeof line,
-                  "%dx%d, %d spp%s in %.2f s: %.3f Mpaths/s, %llu samples discarded", width,
-                  height, samples, resumed, seconds, megapathsPerSecond, discarded);
+                  "%dx%d, %d spp%s in %.2f s: %.3f Mpaths/s, %llu samples discarded", width, height,
+                  samples, resumed, seconds, megapathsPerSecond, discarded);
     return line;
 }
 

@@ -4,20 +4,20 @@
 
 #include "app/BuildInfo.h"
 #include "app/ErrorTargetRun.h"
-#include "interaction/FramePacing.h"
 #include "app/InteractiveSession.h"
 #include "app/Interrupt.h"
 #include "app/Progress.h"
 #include "app/RenderOutputs.h"
 #include "app/SceneDigest.h"
 #include "app/SceneLoading.h"
+#include "film/RenderFile.h"
+#include "interaction/FramePacing.h"
 #include "io/ImageFile.h"
 #include "io/OutputFiles.h"
 #include "platform/ContextFactory.h"
 #include "platform/GlfwWindowContext.h"
 #include "render/KernelChoice.h"
 #include "render/ProgressiveRenderer.h"
-#include "film/RenderFile.h"
 #include "render/ScenePreparation.h"
 #include "scene/Lights.h"
 #include "scene/SceneFeatures.h"
@@ -55,7 +55,7 @@ std::vector<io::OutputRequest> outputRequests(const CommandLine& line)
 // same size, scene, camera, image-changing settings and program build. `line` takes the
 // file's size and seed where the command line gives none.
 film::RenderFile readResumedRender(CommandLine& line, const scene::Scene& scene,
-                                     const std::string& sceneSha256)
+                                   const std::string& sceneSha256)
 {
     const std::filesystem::path& path = *line.resume;
     film::RenderFile resumed;
@@ -67,7 +67,8 @@ film::RenderFile readResumedRender(CommandLine& line, const scene::Scene& scene,
     const film::RenderMetadata& held = resumed.metadata;
     if (held.crop)
         throw std::runtime_error("cannot resume " + path.string() + ": it holds the crop " +
-                                 film::formatCrop(*held.crop) + " of its frame only (--crop); "
+                                 film::formatCrop(*held.crop) +
+                                 " of its frame only (--crop); "
                                  "render more of the crop with another --seed and merge");
     if (!line.sizeGiven) {
         line.width = held.width;
@@ -85,9 +86,11 @@ film::RenderFile readResumedRender(CommandLine& line, const scene::Scene& scene,
     asked.program = programName();
     asked.gitCommit = gitCommit();
     if (const auto difference = film::imageDifference(held, asked))
-        throw std::runtime_error("cannot resume " + path.string() + ": it differs from this "
-                                 "render in " + difference->what + ": " + difference->first +
-                                 " in the file, " + difference->second + " here");
+        throw std::runtime_error("cannot resume " + path.string() +
+                                 ": it differs from this "
+                                 "render in " +
+                                 difference->what + ": " + difference->first + " in the file, " +
+                                 difference->second + " here");
     const film::SampleCountSpan span = film::samplesTakenSpan(resumed.accumulation);
     if (line.samplesPerPixel && span.fewest >= *line.samplesPerPixel)
         throw std::runtime_error(path.string() + " holds " + std::to_string(span.fewest) +
@@ -147,7 +150,7 @@ struct RenderSetup {
 // for how long it rendered.
 struct RenderRun {
     bool endedEarly = false;
-    double seconds = 0.0;  // of the accumulation the outputs hold
+    double seconds = 0.0;                 // of the accumulation the outputs hold
     std::optional<double> windowSeconds;  // the time the window was open, where there was one
 };
 
@@ -157,8 +160,9 @@ void removeStaleTemporariesOf(const std::vector<std::filesystem::path>& outputs,
 {
     for (const io::StaleTemporary& removed : io::removeStaleTemporaries(outputs))
         if (!quiet)
-            std::cout << "removed " << removed.path.string() << ", a temporary file left by process "
-                  << removed.processId << ", which no longer runs" << std::endl;
+            std::cout << "removed " << removed.path.string()
+                      << ", a temporary file left by process " << removed.processId
+                      << ", which no longer runs" << std::endl;
 }
 
 platform::ContextRequest contextRequest(const CommandLine& line)
@@ -186,17 +190,20 @@ namespace {
 void checkOutputNames(const CommandLine& line)
 {
     if (line.statisticsOutput && io::resolveToSameFile(line.outputPath(), *line.statisticsOutput))
-        throw UsageError("--stats-output " + line.statisticsOutput->string() + " names the same "
-                         "file as the image, " + line.outputPath().string() +
-                         ": give two different files");
-    if (line.summaryJson &&
-        (io::resolveToSameFile(line.outputPath(), *line.summaryJson) ||
-         (line.statisticsOutput && io::resolveToSameFile(*line.statisticsOutput, *line.summaryJson))))
-        throw UsageError("--summary-json " + line.summaryJson->string() + " names a file the "
+        throw UsageError("--stats-output " + line.statisticsOutput->string() +
+                         " names the same "
+                         "file as the image, " +
+                         line.outputPath().string() + ": give two different files");
+    if (line.summaryJson && (io::resolveToSameFile(line.outputPath(), *line.summaryJson) ||
+                             (line.statisticsOutput &&
+                              io::resolveToSameFile(*line.statisticsOutput, *line.summaryJson))))
+        throw UsageError("--summary-json " + line.summaryJson->string() +
+                         " names a file the "
                          "render writes its image or statistics to: give another file");
     if (line.resume && line.statisticsOutput &&
         io::resolveToSameFile(*line.resume, *line.statisticsOutput))
-        throw UsageError("--stats-output " + line.statisticsOutput->string() + " names the "
+        throw UsageError("--stats-output " + line.statisticsOutput->string() +
+                         " names the "
                          "render being resumed: give another file");
 }
 
@@ -206,7 +213,8 @@ void warnOfADarkScene(const CommandLine& line, const scene::Scene& scene)
 {
     if (scene::emitsLight(scene))
         return;
-    const std::string why = line.scene.string() + " can emit no light (no light that is not "
+    const std::string why = line.scene.string() +
+                            " can emit no light (no light that is not "
                             "black, no emitting sphere, environment none): its image is black";
     if (line.strict)
         throw std::runtime_error(why + " (--strict)");
@@ -364,10 +372,9 @@ std::string summaryLine(const RenderSetup& setup, const film::Accumulation& accu
     const render::ProgressiveRenderer& renderer = *setup.renderer;
     std::string summary =
         renderer.samplesAdaptively()
-            ? Progress::adaptiveSummary(renderer.width(), renderer.height(),
-                                        film::samplesTakenSpan(accumulation),
-                                        film::samplesTakenInAll(accumulation), run.seconds,
-                                        renderer.discardedSamples())
+            ? Progress::adaptiveSummary(
+                  renderer.width(), renderer.height(), film::samplesTakenSpan(accumulation),
+                  film::samplesTakenInAll(accumulation), run.seconds, renderer.discardedSamples())
             : Progress::summary(renderer.width(), renderer.height(), renderer.samplesPerPixel(),
                                 run.seconds, renderer.discardedSamples(), setup.samplesResumed);
     if (const auto& crop = setup.crop) {
@@ -399,8 +406,9 @@ std::string summaryLine(const RenderSetup& setup, const film::Accumulation& accu
 
 // The picture and the statistics, with what the files say of themselves. The window's
 // picture is the one on screen, drawn once more and read back.
-void writeOutputs(RenderSetup& setup, const CommandLine& line, const film::Accumulation& accumulation,
-                  const RenderRun& run, bool interrupted, double& denoiseSeconds)
+void writeOutputs(RenderSetup& setup, const CommandLine& line,
+                  const film::Accumulation& accumulation, const RenderRun& run, bool interrupted,
+                  double& denoiseSeconds)
 {
     render::ProgressiveRenderer& renderer = *setup.renderer;
     io::Image windowPicture;
@@ -438,9 +446,9 @@ void writeOutputs(RenderSetup& setup, const CommandLine& line, const film::Accum
         metadata.interrupted = interruptionNote(line, renderer.samplesPerPixel(), run.seconds);
     metadata.crop = line.crop;
     // All images, or none (io/OutputFiles.h).
-    std::vector<io::OutputImage> outputs = renderOutputs(
-        {line.outputPath()}, line.statisticsOutput, accumulation, metadata,
-        [&] { return fromWindow ? windowPicture : renderer.toneMapped(); });
+    std::vector<io::OutputImage> outputs =
+        renderOutputs({line.outputPath()}, line.statisticsOutput, accumulation, metadata,
+                      [&] { return fromWindow ? windowPicture : renderer.toneMapped(); });
     if (line.denoise) {
         const auto start = std::chrono::steady_clock::now();
         outputs.push_back(denoisedOutput(denoisedPath(line.outputPath()),
@@ -548,9 +556,9 @@ std::string summaryJson(const RenderSetup& setup, const CommandLine& line,
     field("seconds", jsonNumber(run.seconds));
     field("setupSeconds", jsonNumber(setup.setupSeconds));
     field("megapathsPerSecond", jsonNumber(run.seconds > 0.0 ? paths / run.seconds / 1e6 : 0.0));
-    const film::ErrorEstimate* estimate =
-        setup.errorTarget && setup.errorTarget->estimate() ? &*setup.errorTarget->estimate()
-                                                           : nullptr;
+    const film::ErrorEstimate* estimate = setup.errorTarget && setup.errorTarget->estimate()
+                                              ? &*setup.errorTarget->estimate()
+                                              : nullptr;
     field("targetError", line.targetError ? jsonNumber(*line.targetError) : "null");
     field("errorReached", estimate ? jsonNumber(estimate->relativeError) : "null");
     field("errorUncertainty", estimate ? jsonNumber(estimate->uncertainty) : "null");
@@ -595,10 +603,9 @@ int finishRender(RenderSetup& setup, const CommandLine& line, const RenderRun& r
 
     // An image without a sample is all black, and a resumed render without a new sample is
     // the file it resumed: neither is written, nor over an older file.
-    const bool nothingNew =
-        setup.resumed ? film::samplesTakenInAll(accumulation) <=
-                            film::samplesTakenInAll(setup.resumed->accumulation)
-                      : renderer.samplesPerPixel() == 0;
+    const bool nothingNew = setup.resumed ? film::samplesTakenInAll(accumulation) <=
+                                                film::samplesTakenInAll(setup.resumed->accumulation)
+                                          : renderer.samplesPerPixel() == 0;
     if (setup.writesFile && nothingNew) {
         const char* newSample = setup.resumed ? "new " : "";
         if (!interrupted) {
@@ -611,8 +618,7 @@ int finishRender(RenderSetup& setup, const CommandLine& line, const RenderRun& r
         }
         std::error_code error;
         const bool older = std::filesystem::exists(line.outputPath(), error);
-        report(summary + " (interrupted before the first " + newSample +
-                   "sample: nothing written" +
+        report(summary + " (interrupted before the first " + newSample + "sample: nothing written" +
                    (older ? ", " + line.outputPath().string() + " left as it was" : "") + ")",
                renderEnd(setup, line, run, interrupted), {});
         return kExitInterrupted;
@@ -681,9 +687,9 @@ int runRender(const CommandLine& commandLine, const InterruptWatch& interrupt)
 
 int printFeatures(const CommandLine& line)
 {
-    const render::PreparedScene prepared =
-        render::prepareScene(scene::parseSceneFile(line.scene),
-                             shadergen::shaderBuild(line.settings), render::defaultShaderDirectory());
+    const render::PreparedScene prepared = render::prepareScene(
+        scene::parseSceneFile(line.scene), shadergen::shaderBuild(line.settings),
+        render::defaultShaderDirectory());
     std::cout << prepared.code.features.describe() << std::flush;
     // The OpenGL a headless render of this command line would use (a window only where
     // --gl window asks for one), and the kernel it would run there.

@@ -1,17 +1,16 @@
 #include "app/RenderOutputs.h"
 
 #include "app/BuildInfo.h"
+#include "film/RenderFile.h"
 #include "io/ImageFile.h"
 #include "io/ImageFormats.h"
-#include "film/RenderFile.h"
-
 
 namespace app {
 
 film::RenderMetadata describeRender(const std::filesystem::path& sceneFile,
-                                      const std::string& sceneSha256,
-                                      const render::ProgressiveRenderer& renderer,
-                                      const platform::ContextIdentity& gl)
+                                    const std::string& sceneSha256,
+                                    const render::ProgressiveRenderer& renderer,
+                                    const platform::ContextIdentity& gl)
 {
     film::RenderMetadata metadata;
     metadata.width = renderer.width();
@@ -36,11 +35,11 @@ film::RenderMetadata describeRender(const std::filesystem::path& sceneFile,
     return metadata;
 }
 
-std::vector<io::OutputImage> renderOutputs(
-    const std::vector<std::filesystem::path>& images,
-    const std::optional<std::filesystem::path>& statistics,
-    const film::Accumulation& accumulation, const film::RenderMetadata& metadata,
-    const std::function<io::Image()>& picture)
+std::vector<io::OutputImage> renderOutputs(const std::vector<std::filesystem::path>& images,
+                                           const std::optional<std::filesystem::path>& statistics,
+                                           const film::Accumulation& accumulation,
+                                           const film::RenderMetadata& metadata,
+                                           const std::function<io::Image()>& picture)
 {
     const std::vector<io::ImageAttribute> attributes = film::metadataAttributes(metadata);
     std::vector<io::OutputImage> outputs;

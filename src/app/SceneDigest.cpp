@@ -34,8 +34,8 @@ std::string sceneSha256(const std::vector<std::filesystem::path>& files)
         const std::string bytes = contentsOf(file);
         unsigned char length[8];
         for (int i = 0; i < 8; ++i)
-            length[i] = static_cast<unsigned char>(static_cast<std::uint64_t>(bytes.size()) >>
-                                                   (8 * i));
+            length[i] =
+                static_cast<unsigned char>(static_cast<std::uint64_t>(bytes.size()) >> (8 * i));
         digest.add(length, sizeof length);
         digest.add(bytes);
     }

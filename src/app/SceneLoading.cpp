@@ -20,8 +20,8 @@ scene::Scene loadScene(const std::filesystem::path& path)
                 io::checkReadableImage(pigment.texturePath);
             } catch (const std::exception& error) {
                 throw std::runtime_error(path.string() + ":" + std::to_string(pigment.line) +
-                                         ": texture '" + pigment.textureName + "': " +
-                                         error.what());
+                                         ": texture '" + pigment.textureName +
+                                         "': " + error.what());
             }
         }
     // Read whole and its distribution built, so that a file whose pixels cannot be read

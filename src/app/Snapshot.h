@@ -1,6 +1,6 @@
 #pragma once
-#include "render/ProgressiveRenderer.h"
 #include "film/RenderMetadata.h"
+#include "render/ProgressiveRenderer.h"
 
 #include <filesystem>
 #include <optional>

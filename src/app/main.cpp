@@ -1,7 +1,7 @@
 #include "app/BuildInfo.h"
 #include "app/CommandLine.h"
-#include "app/InfoCommand.h"
 #include "app/Denoising.h"
+#include "app/InfoCommand.h"
 #include "app/Interrupt.h"
 #include "app/MergeCommand.h"
 #include "app/RenderCommand.h"

@@ -23,9 +23,9 @@ double Accumulation::sampleVariance(int x, int y) const
     const double kept = samplesKept(x, y);
     if (!(kept >= 2.0))
         return 0.0;
-    const double sumSquares = (static_cast<double>(moments.at(x, y, 0)) + moments.at(x, y, 1) +
-                               moments.at(x, y, 2)) /
-                              3.0;
+    const double sumSquares =
+        (static_cast<double>(moments.at(x, y, 0)) + moments.at(x, y, 1) + moments.at(x, y, 2)) /
+        3.0;
     return std::max(0.0, sumSquares / (kept - 1.0));
 }
 
@@ -91,7 +91,8 @@ Accumulation combineAccumulations(const std::vector<const Accumulation*>& parts)
                 for (int c = 0; c < 3; ++c) {
                     const double delta = part->estimate.at(x, y, c) - mean[c];
                     mean[c] += delta * partCount / total;
-                    sumSquares[c] += part->moments.at(x, y, c) + delta * delta * count * partCount / total;
+                    sumSquares[c] +=
+                        part->moments.at(x, y, c) + delta * delta * count * partCount / total;
                 }
                 count = total;
             }

@@ -26,8 +26,9 @@ AdaptivePlan planAdaptiveSampling(const Accumulation& accumulation,
     targets.tileSize = tileSize;
     targets.columns = (width + tileSize - 1) / tileSize;
     targets.rows = (height + tileSize - 1) / tileSize;
-    targets.samples.assign(static_cast<std::size_t>(targets.columns) * targets.rows,
-                           static_cast<float>(limited(sampling.minimumSamples, sampling.sampleLimit)));
+    targets.samples.assign(
+        static_cast<std::size_t>(targets.columns) * targets.rows,
+        static_cast<float>(limited(sampling.minimumSamples, sampling.sampleLimit)));
 
     // Each pixel's standard deviation, top row first.
     std::vector<double> deviations;

@@ -37,8 +37,8 @@ namespace film {
 struct AdaptiveSampling {
     double targetError = 0.01;  // relative RMSE, ConvergenceEstimate.h
     int minimumSamples = 32;
-    int tileSize = 1;          // pixels along a tile's side; 1 plans every pixel alone
-    int sampleLimit = 0;       // most samples a pixel may take (--spp); 0: no limit
+    int tileSize = 1;     // pixels along a tile's side; 1 plans every pixel alone
+    int sampleLimit = 0;  // most samples a pixel may take (--spp); 0: no limit
 };
 
 // The sample count each tile's pixels stop at, for the shader (path_tracer_main.glsl):

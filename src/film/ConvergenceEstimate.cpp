@@ -52,9 +52,9 @@ std::optional<ErrorEstimate> estimateRelativeError(const Accumulation& accumulat
         return estimate;  // black everywhere: samples are never negative, so no noise either
     estimate.relativeError = std::sqrt(meanVariance) / estimate.meanRadiance;
     if (meanVariance > 0.0) {
-        const double perPixelVariance =
-            neighbourPairs > 0 ? 0.5 * neighbourDifferenceSquares / neighbourPairs
-                               : meanVariance * meanVariance;
+        const double perPixelVariance = neighbourPairs > 0
+                                            ? 0.5 * neighbourDifferenceSquares / neighbourPairs
+                                            : meanVariance * meanVariance;
         const double varianceRelativeError =
             std::sqrt(perPixelVariance / static_cast<double>(pixels)) / meanVariance;
         const double meanRelativeError =

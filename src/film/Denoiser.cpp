@@ -191,8 +191,8 @@ io::Image denoiseImage(const io::Image& color, const io::Image& albedo, const io
     release.filter = filter;
     throwOnError(oidn, device, "making its filter");
     const auto share = [&](const char* name, std::vector<float>& texels) {
-        oidn.setSharedFilterImage(filter, name, texels.data(), kFormatFloat3, width, height, 0,
-                                  0, 0);
+        oidn.setSharedFilterImage(filter, name, texels.data(), kFormatFloat3, width, height, 0, 0,
+                                  0);
     };
     share("color", input);
     if (!albedoTexels.empty())

@@ -1,7 +1,7 @@
 #include "film/RenderFile.h"
 
-#include "io/ImageFormats.h"
 #include "film/RenderFileChecks.h"
+#include "io/ImageFormats.h"
 
 #include <stdexcept>
 
@@ -9,16 +9,20 @@ namespace film {
 
 const std::vector<std::string>& accumulationChannelNames()
 {
-    static const std::vector<std::string> names = {
-        "R",       "G", "B", "samples", "samplesDiscarded", "sumSquaredDeviations.R",
-        "sumSquaredDeviations.G", "sumSquaredDeviations.B"};
+    static const std::vector<std::string> names = {"R",
+                                                   "G",
+                                                   "B",
+                                                   "samples",
+                                                   "samplesDiscarded",
+                                                   "sumSquaredDeviations.R",
+                                                   "sumSquaredDeviations.G",
+                                                   "sumSquaredDeviations.B"};
     return names;
 }
 
 const std::vector<std::string>& statisticsChannelNames()
 {
-    static const std::vector<std::string> names = {"samples", "samplesDiscarded",
-                                                   "varianceOfMean"};
+    static const std::vector<std::string> names = {"samples", "samplesDiscarded", "varianceOfMean"};
     return names;
 }
 
@@ -58,8 +62,7 @@ io::OutputImage withPixelDigest(io::OutputImage output)
 }  // namespace
 
 io::OutputImage accumulationOutput(const std::filesystem::path& path,
-                                   const Accumulation& accumulation,
-                                   const RenderMetadata& metadata)
+                                   const Accumulation& accumulation, const RenderMetadata& metadata)
 {
     const int features = accumulation.hasFeatures() ? 8 : 0;
     io::Image image(accumulation.width(), accumulation.height(), 8 + features);
@@ -82,8 +85,7 @@ io::OutputImage accumulationOutput(const std::filesystem::path& path,
 }
 
 io::OutputImage statisticsOutput(const std::filesystem::path& path,
-                                 const Accumulation& accumulation,
-                                 const RenderMetadata& metadata)
+                                 const Accumulation& accumulation, const RenderMetadata& metadata)
 {
     return withPixelDigest({path, sampleStatistics(accumulation), metadataAttributes(metadata),
                             statisticsChannelNames()});
@@ -93,7 +95,8 @@ RenderFile readRenderFile(const std::filesystem::path& path)
 {
     // Read only as OpenEXR: a file named otherwise is never handed to another reader.
     if (io::lowerCaseExtension(path) != ".exr")
-        throw std::runtime_error(path.string() + " holds no accumulation: it is not an .exr "
+        throw std::runtime_error(path.string() +
+                                 " holds no accumulation: it is not an .exr "
                                  "file, and only an .exr that this program wrote with --output "
                                  "or merge can be merged or resumed");
     const io::ImageFileContents file = io::readImageFile(path);
@@ -110,7 +113,7 @@ RenderFile readRenderFile(const std::filesystem::path& path)
     std::optional<RenderMetadata> metadata = metadataFromAttributes(file.attributes, path.string());
     if (!metadata)
         throw std::runtime_error(path.string() + " has no metadata of this program (no "
-                                 "raytracer:sceneSha256 attribute)");
+                                                 "raytracer:sceneSha256 attribute)");
     metadata->width = file.image.width;
     metadata->height = file.image.height;
     checkPixelValues(file, *metadata, path.string());
@@ -122,7 +125,8 @@ RenderFile readRenderFile(const std::filesystem::path& path)
         if (const int channel = file.channelIndex(name); channel >= 0)
             features.push_back(channel);
     if (!features.empty() && features.size() != featureChannelNames().size())
-        throw std::runtime_error(path.string() + " holds some feature channels but not all "
+        throw std::runtime_error(path.string() +
+                                 " holds some feature channels but not all "
                                  "(albedo.R/G/B, N.X/Y/Z, Z, coverage): not a render this "
                                  "program wrote");
 

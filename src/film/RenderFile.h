@@ -13,9 +13,9 @@
 // shows R, G, B; the rest are layers beside them. The statistics file holds
 //   samples  samplesDiscarded  varianceOfMean
 // (varianceOfMean: the channel average of the variance of the mean radiance).
-#include "io/OutputFiles.h"
 #include "film/Accumulation.h"
 #include "film/RenderMetadata.h"
+#include "io/OutputFiles.h"
 
 #include <filesystem>
 #include <string>
@@ -36,8 +36,7 @@ io::OutputImage accumulationOutput(const std::filesystem::path& path,
                                    const RenderMetadata& metadata);
 // The statistics file, with the metadata where the format holds it.
 io::OutputImage statisticsOutput(const std::filesystem::path& path,
-                                 const Accumulation& accumulation,
-                                 const RenderMetadata& metadata);
+                                 const Accumulation& accumulation, const RenderMetadata& metadata);
 
 struct RenderFile {
     Accumulation accumulation;

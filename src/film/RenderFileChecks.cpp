@@ -1,8 +1,8 @@
 #include "film/RenderFileChecks.h"
 
-#include "io/Sha256.h"
 #include "film/Accumulation.h"
 #include "film/RenderFile.h"
+#include "io/Sha256.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,8 +43,11 @@ class PixelChecker {
 public:
     PixelChecker(const io::ImageFileContents& file, const RenderMetadata& metadata,
                  const std::string& fileName)
-        : file_(file), fileName_(fileName), largestCount_(largestCountOf(metadata)),
-          kept_(file.channelIndex("samples")), discarded_(file.channelIndex("samplesDiscarded")),
+        : file_(file),
+          fileName_(fileName),
+          largestCount_(largestCountOf(metadata)),
+          kept_(file.channelIndex("samples")),
+          discarded_(file.channelIndex("samplesDiscarded")),
           variance_(file.channelIndex("varianceOfMean"))
     {
         const char* means[3] = {"R", "G", "B"};
@@ -87,8 +90,8 @@ public:
             const double mean = value(x, y, means_[c]);
             if (!std::isfinite(mean) || mean < 0.0 || mean > kLargestMeanRadiance)
                 refuse(x, y, means_[c],
-                       "is not a mean radiance (finite, from 0 to " +
-                           number(kLargestMeanRadiance) + ")");
+                       "is not a mean radiance (finite, from 0 to " + number(kLargestMeanRadiance) +
+                           ")");
             if (kept == 0.0 && mean != 0.0)
                 refuse(x, y, means_[c], "is the mean of no sample (samples is 0), which is 0");
             if (moments_[c] < 0)
@@ -96,8 +99,7 @@ public:
             const double moment = value(x, y, moments_[c]);
             const double largest = 2.0 * kept * (kept - 1.0) * mean * mean;
             if (!std::isfinite(moment) || moment < 0.0)
-                refuse(x, y, moments_[c],
-                       "is not a sum of squared deviations (finite, from 0)");
+                refuse(x, y, moments_[c], "is not a sum of squared deviations (finite, from 0)");
             if (moment > largest)
                 refuse(x, y, moments_[c],
                        "is more than " + number(kept) + " samples of mean " + number(mean) +
@@ -139,11 +141,10 @@ private:
 
     [[noreturn]] void refuse(int x, int y, int channel, const std::string& why) const
     {
-        throw std::runtime_error(fileName_ + ": pixel (" + std::to_string(x) + ", " +
-                                 std::to_string(y) + "), channel " +
-                                 file_.channelNames[static_cast<std::size_t>(channel)] + ": " +
-                                 number(value(x, y, channel)) + " " + why +
-                                 ": not a render this program wrote");
+        throw std::runtime_error(
+            fileName_ + ": pixel (" + std::to_string(x) + ", " + std::to_string(y) + "), channel " +
+            file_.channelNames[static_cast<std::size_t>(channel)] + ": " +
+            number(value(x, y, channel)) + " " + why + ": not a render this program wrote");
     }
 
     const io::ImageFileContents& file_;
@@ -198,8 +199,10 @@ void checkPixelDigest(const io::ImageFileContents& file, const std::string& file
     if (recorded == file.attributes.end())
         return;
     if (pixelDigest(file.image, file.channelNames) != recorded->value)
-        throw std::runtime_error(fileName + ": its pixels are not the ones it was written with "
-                                 "(their SHA-256 is not " + std::string(kPixelDigestAttribute) +
+        throw std::runtime_error(fileName +
+                                 ": its pixels are not the ones it was written with "
+                                 "(their SHA-256 is not " +
+                                 std::string(kPixelDigestAttribute) +
                                  "): the file was damaged after it was written");
 }
 

@@ -4,8 +4,8 @@
 // went wrong or someone who made it up, so every value of every pixel is checked against what
 // a render can hold, and the first that no render holds is reported with its pixel and
 // channel.
-#include "io/ImageFile.h"
 #include "film/RenderMetadata.h"
+#include "io/ImageFile.h"
 
 #include <string>
 #include <vector>

@@ -44,8 +44,8 @@ std::vector<const settings::SettingRow*> imageSettings()
 
 std::string formatCrop(const PixelCrop& crop)
 {
-    return std::to_string(crop.x0) + " " + std::to_string(crop.y0) + " " +
-           std::to_string(crop.x1) + " " + std::to_string(crop.y1);
+    return std::to_string(crop.x0) + " " + std::to_string(crop.y0) + " " + std::to_string(crop.x1) +
+           " " + std::to_string(crop.y1);
 }
 
 std::optional<PixelCrop> parseCrop(const std::string& text)
@@ -118,10 +118,10 @@ std::vector<io::ImageAttribute> metadataAttributes(const RenderMetadata& metadat
     for (const settings::SettingRow* setting : imageSettings())
         attributes.push_back(
             {kPrefix + setting->description.metadataKey, setting->format(metadata.settings)});
-    for (const auto& [key, value] : {std::pair{"glContext", &metadata.glContext},
-                                     std::pair{"glRenderer", &metadata.glRenderer},
-                                     std::pair{"glVersion", &metadata.glVersion},
-                                     std::pair{"kernel", &metadata.kernel}})
+    for (const auto& [key, value] :
+         {std::pair{"glContext", &metadata.glContext},
+          std::pair{"glRenderer", &metadata.glRenderer},
+          std::pair{"glVersion", &metadata.glVersion}, std::pair{"kernel", &metadata.kernel}})
         if (!value->empty())
             attributes.push_back({kPrefix + key, *value});
     attributes.push_back({kPrefix + "program", metadata.program});
@@ -140,8 +140,8 @@ std::vector<io::ImageAttribute> metadataAttributes(const RenderMetadata& metadat
     return attributes;
 }
 
-std::optional<RenderMetadata> metadataFromAttributes(
-    const std::vector<io::ImageAttribute>& attributes, const std::string& file)
+std::optional<RenderMetadata>
+metadataFromAttributes(const std::vector<io::ImageAttribute>& attributes, const std::string& file)
 {
     std::map<std::string, std::string> values;
     for (const io::ImageAttribute& attribute : attributes)
@@ -168,8 +168,8 @@ std::optional<RenderMetadata> metadataFromAttributes(
     const std::string largest = std::to_string(kLargestSampleCount);
     if (!readInteger(required("samplesPerPixel"), metadata.samplesPerPixel) ||
         metadata.samplesPerPixel < 0 || metadata.samplesPerPixel > kLargestSampleCount)
-        throw malformed("samplesPerPixel", "is '" + values["samplesPerPixel"] +
-                                               "', not a count from 0 to " + largest);
+        throw malformed("samplesPerPixel",
+                        "is '" + values["samplesPerPixel"] + "', not a count from 0 to " + largest);
     try {
         metadata.sampleRanges = parseSampleRanges(required("sampleRanges"));
     } catch (const std::invalid_argument& error) {
@@ -206,8 +206,9 @@ std::optional<RenderMetadata> metadataFromAttributes(
         metadata.crop = parseCrop(values["crop"]);
         if (!metadata.crop || metadata.crop->x0 < 0 || metadata.crop->y0 < 0 ||
             metadata.crop->width() <= 0 || metadata.crop->height() <= 0)
-            throw malformed("crop", "is '" + values["crop"] + "', not 'X0 Y0 X1 Y1' with X0 < X1 "
-                                    "and Y0 < Y1, from 0");
+            throw malformed("crop", "is '" + values["crop"] +
+                                        "', not 'X0 Y0 X1 Y1' with X0 < X1 "
+                                        "and Y0 < Y1, from 0");
     }
     std::istringstream merged(values["mergedFrom"]);
     for (std::string line; std::getline(merged, line);)

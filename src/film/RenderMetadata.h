@@ -3,10 +3,10 @@
 // "raytracer:", in EXR and PNG files): what it shows, how it was made and which samples it
 // holds. It is what lets `raytracer info` describe a file, and merge and resume refuse
 // samples that do not estimate one image.
-#include "io/ImageFile.h"
-#include "settings/SettingsTable.h"
 #include "film/SampleRanges.h"
+#include "io/ImageFile.h"
 #include "scene/Scene.h"
+#include "settings/SettingsTable.h"
 
 #include <cstdint>
 #include <optional>
@@ -42,9 +42,9 @@ std::string formatCrop(const PixelCrop& crop);
 std::optional<PixelCrop> parseCrop(const std::string& text);
 
 struct RenderMetadata {
-    int width = 0;   // the image's own size (the format holds it; no attribute)
+    int width = 0;  // the image's own size (the format holds it; no attribute)
     int height = 0;
-    std::string sceneFile;    // as named on the command line
+    std::string sceneFile;  // as named on the command line
     // SHA-256 over the scene file and every user SDF and texture file it uses
     // (app/SceneDigest.h).
     std::string sceneSha256;
@@ -97,8 +97,8 @@ std::vector<io::ImageAttribute> metadataAttributes(const RenderMetadata& metadat
 // is missing or malformed, or holds what no render holds: samples per pixel or a sample index
 // beyond kLargestSampleCount (film/Accumulation.h), seconds that are negative or not
 // finite. width and height are left 0.
-std::optional<RenderMetadata> metadataFromAttributes(
-    const std::vector<io::ImageAttribute>& attributes, const std::string& file);
+std::optional<RenderMetadata>
+metadataFromAttributes(const std::vector<io::ImageAttribute>& attributes, const std::string& file);
 
 // Why two renders' samples do not estimate one image: the first of size, scene, camera,
 // image-changing setting and program build in which they differ.

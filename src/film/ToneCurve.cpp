@@ -69,8 +69,8 @@ Rgb agx(const Rgb& colour)
     for (double& c : v) {
         const double ev = std::clamp(std::log2(std::max(c, 1e-10)), ToneCurve::kAgxMinimumEv,
                                      ToneCurve::kAgxMaximumEv);
-        const double x = (ev - ToneCurve::kAgxMinimumEv) /
-                         (ToneCurve::kAgxMaximumEv - ToneCurve::kAgxMinimumEv);
+        const double x =
+            (ev - ToneCurve::kAgxMinimumEv) / (ToneCurve::kAgxMaximumEv - ToneCurve::kAgxMinimumEv);
         double sigmoid = 0.0;
         for (double coefficient : ToneCurve::kAgxContrast)
             sigmoid = sigmoid * x + coefficient;

@@ -48,13 +48,13 @@ struct ToneCurve {
         0.0784335999999992, 0.878468636469772,  0.0784336,
         0.0792237451477643, 0.0791661274605434, 0.879142973793104};
     static constexpr std::array<double, 9> kAgxOutset = {
-        1.19687900512017,   -0.0528968517574562, -0.0529716355144438,
-        -0.0980208811401368, 1.15190312990417,   -0.0980434501171241,
+        1.19687900512017,    -0.0528968517574562, -0.0529716355144438,
+        -0.0980208811401368, 1.15190312990417,    -0.0980434501171241,
         -0.0990297440797205, -0.0989611768448433, 1.15107367264116};
     static constexpr double kAgxMinimumEv = -12.47393;
     static constexpr double kAgxMaximumEv = 4.026069;
     // The sigmoid's coefficients, from x^6 down to x^0.
-    static constexpr std::array<double, 7> kAgxContrast = {15.5,   -40.14, 31.96, -6.868,
+    static constexpr std::array<double, 7> kAgxContrast = {15.5,   -40.14, 31.96,   -6.868,
                                                            0.4298, 0.1191, -0.00232};
     // PBR Neutral: the offset at black (F90 of a dielectric), where compression starts, and
     // how much compressed highlights lose of their colour.

@@ -67,9 +67,8 @@ void loadEntryPoints(ProcAddressLoader loader, bool contextHasGlx)
     const GLenum status = glewInit();
     // glewInit first loads the GL entry points, then GLX's. Without GLX (OSMesa) the second
     // part fails after the first has succeeded; only the GL part matters to the renderer.
-    const bool onlyGlxMissing =
-        !contextHasGlx &&
-        (status == GLEW_ERROR_GLX_VERSION_11_ONLY || status == GLEW_ERROR_NO_GLX_DISPLAY);
+    const bool onlyGlxMissing = !contextHasGlx && (status == GLEW_ERROR_GLX_VERSION_11_ONLY ||
+                                                   status == GLEW_ERROR_NO_GLX_DISPLAY);
     if (status != GLEW_OK && !onlyGlxMissing)
         throw std::runtime_error(std::string("GLEW could not load OpenGL: ") +
                                  reinterpret_cast<const char*>(glewGetErrorString(status)));
@@ -85,8 +84,8 @@ void loadEntryPoints(ProcAddressLoader loader, bool contextHasGlx)
 // see export_gl_loader in CMakeLists.txt), so GLEW's lookups go to the current context's
 // loader: OSMesaGetProcAddress headless, glfwGetProcAddress in a window. Before any context
 // is current it defers to the system's function, so GLX itself is never starved.
-extern "C" __attribute__((visibility("default"))) void (*glXGetProcAddressARB(
-    const GLubyte* name))(void)
+extern "C"
+    __attribute__((visibility("default"))) void (*glXGetProcAddressARB(const GLubyte* name))(void)
 {
     if (gl::currentLoader != nullptr)
         return reinterpret_cast<void (*)(void)>(

@@ -15,8 +15,8 @@ Framebuffer::Framebuffer(const std::vector<const Texture*>& colorAttachments)
     std::vector<GLenum> drawBuffers;
     for (std::size_t i = 0; i < colorAttachments.size(); ++i) {
         const GLenum attachment = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
-        glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D,
-                               colorAttachments[i]->id(), 0);
+        glFramebufferTexture2D(GL_FRAMEBUFFER, attachment, GL_TEXTURE_2D, colorAttachments[i]->id(),
+                               0);
         drawBuffers.push_back(attachment);
     }
     glDrawBuffers(static_cast<GLsizei>(drawBuffers.size()), drawBuffers.data());
@@ -25,7 +25,8 @@ Framebuffer::Framebuffer(const std::vector<const Texture*>& colorAttachments)
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         glDeleteFramebuffers(1, &id_);
         throw std::runtime_error("this OpenGL cannot render to the accumulation targets "
-                                 "(framebuffer status " + std::to_string(status) + ")");
+                                 "(framebuffer status " +
+                                 std::to_string(status) + ")");
     }
 }
 

@@ -42,7 +42,7 @@ GLuint compile(GLenum stage, const std::string& source, const std::string& label
     if (compiled != GL_TRUE) {
         const std::string log = shaderLog(shader);
         glDeleteShader(shader);
-        const char* stageName = stage == GL_VERTEX_SHADER     ? "vertex"
+        const char* stageName = stage == GL_VERTEX_SHADER    ? "vertex"
                                 : stage == GL_COMPUTE_SHADER ? "compute"
                                                              : "fragment";
         throw std::runtime_error("the " + std::string(stageName) + " shader of " + label +
@@ -71,8 +71,7 @@ Program Program::compute(const std::string& computeSource, const std::string& la
                          const LogExplainer& explainLog)
 {
     Program program;
-    program.link({compile(GL_COMPUTE_SHADER, computeSource, label, explainLog)}, label,
-                 explainLog);
+    program.link({compile(GL_COMPUTE_SHADER, computeSource, label, explainLog)}, label, explainLog);
     return program;
 }
 

@@ -47,8 +47,8 @@ void Texture::setSampling(GLint minFilter, GLint magFilter, GLint wrapS, GLint w
     glTexParameteri(target_, GL_TEXTURE_WRAP_T, wrapT);
 }
 
-Texture createTexture2D(GLenum internalFormat, int width, int height, GLenum format,
-                        GLenum type, const void* pixels)
+Texture createTexture2D(GLenum internalFormat, int width, int height, GLenum format, GLenum type,
+                        const void* pixels)
 {
     Texture texture(GL_TEXTURE_2D);
     texture.bind(0);

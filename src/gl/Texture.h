@@ -27,7 +27,7 @@ private:
 };
 
 // A 2D texture of one level, nearest-filtered: a render target or a data image.
-Texture createTexture2D(GLenum internalFormat, int width, int height, GLenum format,
-                        GLenum type, const void* pixels);
+Texture createTexture2D(GLenum internalFormat, int width, int height, GLenum format, GLenum type,
+                        const void* pixels);
 
 }  // namespace gl

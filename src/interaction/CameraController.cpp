@@ -109,8 +109,7 @@ void CameraController::orbit(glm::vec2 dragPixels, float viewportHeightPixels)
     const float pitch = dragPixels.y * radiansPerPixel;
 
     // The offset from the pivot in spherical terms about the up vector.
-    const float elevation =
-        std::asin(std::clamp(glm::dot(offset / distance, up), -1.0f, 1.0f));
+    const float elevation = std::asin(std::clamp(glm::dot(offset / distance, up), -1.0f, 1.0f));
     glm::vec3 horizontal = unitOrZero(offset - glm::dot(offset, up) * up);
     if (horizontal == glm::vec3(0.0f))
         horizontal = perpendicularTo(up);

@@ -8,7 +8,8 @@ int samplesPerFrameFor(double targetFrameSeconds, double secondsPerSample, int m
 {
     if (!(secondsPerSample > 0.0))
         return most;  // too fast to measure
-    const double samples = std::min(targetFrameSeconds / secondsPerSample, static_cast<double>(most));
+    const double samples =
+        std::min(targetFrameSeconds / secondsPerSample, static_cast<double>(most));
     return std::max(1, static_cast<int>(samples));
 }
 

@@ -87,16 +87,15 @@ PanelSettings StatisticsPanel::draw(const PanelReadings& readings, const PanelSe
         const ImVec2 display = ImGui::GetIO().DisplaySize;
         const float wrapWidth = std::max(100.0f, std::min(kWrapWidth, display.x - 6.0f * kMargin));
         ImGui::SetNextWindowPos(ImVec2(kMargin, kMargin), ImGuiCond_FirstUseEver);
-        ImGui::SetNextWindowSizeConstraints(
-            ImVec2(0.0f, 0.0f), ImVec2(std::max(display.x - 2.0f * kMargin, 50.0f),
-                                       std::max(display.y - 2.0f * kMargin, 50.0f)));
+        ImGui::SetNextWindowSizeConstraints(ImVec2(0.0f, 0.0f),
+                                            ImVec2(std::max(display.x - 2.0f * kMargin, 50.0f),
+                                                   std::max(display.y - 2.0f * kMargin, 50.0f)));
         ImGui::SetNextWindowBgAlpha(0.75f);
         ImGui::Begin("statistics (Tab hides)", nullptr,
                      ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing |
                          ImGuiWindowFlags_HorizontalScrollbar);
         ImGui::Text("%dx%d   %d spp   %.2f spp/s   %.1f s", readings.width, readings.height,
-                    readings.samplesPerPixel, readings.samplesPerSecond,
-                    readings.elapsedSeconds);
+                    readings.samplesPerPixel, readings.samplesPerSecond, readings.elapsedSeconds);
         if (readings.previewing)
             ImGui::Text("moving: 1 sample per frame, 1/%d resolution, %.1f fps",
                         readings.previewDivisor, readings.previewFramesPerSecond);

@@ -69,8 +69,8 @@ void checkWithinLimits(const fs::path& path, const ImageLayout& layout, std::int
                                std::to_string(layout.y) + "), not at (0, 0)");
     const std::string size = std::to_string(layout.width) + "x" + std::to_string(layout.height);
     if (layout.width < 1 || layout.height < 1 || layout.channels < 1)
-        refuseToRead(path, "it holds no pixels (" + size + ", " +
-                               std::to_string(layout.channels) + " channels)");
+        refuseToRead(path, "it holds no pixels (" + size + ", " + std::to_string(layout.channels) +
+                               " channels)");
     if (layout.width > kLargestSideRead || layout.height > kLargestSideRead)
         refuseToRead(path, "its size, " + size + ", is beyond the largest image read (" +
                                std::to_string(kLargestSideRead) + " pixels a side)");
@@ -99,8 +99,7 @@ void checkWithinLimits(const fs::path& path, const ImageLayout& layout, std::int
 // descriptor by the reader of the format its extension names, its header within the limits.
 class UntrustedImage {
 public:
-    explicit UntrustedImage(const fs::path& path)
-        : format_(formatFor(path)), file_(path)
+    explicit UntrustedImage(const fs::path& path) : format_(formatFor(path)), file_(path)
     {
         if (format_.openImageIoName == "openexr") {
             limitOpenExrHeaders();
@@ -108,7 +107,7 @@ public:
                               file_.size());
         }
         proxy_ = std::make_unique<OIIO::Filesystem::IOFile>(file_.stream(),
-                                                             OIIO::Filesystem::IOProxy::Read);
+                                                            OIIO::Filesystem::IOProxy::Read);
         input_ = OIIO::ImageInput::create(format_.openImageIoName);
         if (!input_)
             refuseToRead(path, "OpenImageIO has no reader for " + format_.openImageIoName + ": " +
@@ -156,8 +155,8 @@ bool isTiled(const OIIO::ImageSpec& spec)
 // Converts `rows` rows of `width` pixels of the file's native data (every channel in its own
 // format, rows `sourceRow` bytes apart) into 32-bit floats (8-bit values scaled to [0, 1]),
 // rows `width of the image` floats apart.
-bool convertToFloat(const OIIO::ImageSpec& spec, const unsigned char* source,
-                    std::size_t sourceRow, int width, int rows, float* destination)
+bool convertToFloat(const OIIO::ImageSpec& spec, const unsigned char* source, std::size_t sourceRow,
+                    int width, int rows, float* destination)
 {
     const auto pixelBytes = static_cast<OIIO::stride_t>(spec.pixel_bytes(true));
     const auto floatBytes = static_cast<OIIO::stride_t>(sizeof(float));
@@ -208,8 +207,8 @@ std::vector<unsigned char> encodePfm(const fs::path& destination, const Image& i
         throw std::runtime_error("cannot write " + destination.string() +
                                  ": PFM holds one or three channels");
     const std::string header = std::string(image.channels == 3 ? "PF" : "Pf") + "\n" +
-                               std::to_string(image.width) + " " +
-                               std::to_string(image.height) + "\n-1.0\n";
+                               std::to_string(image.width) + " " + std::to_string(image.height) +
+                               "\n-1.0\n";
     std::vector<unsigned char> bytes(header.begin(), header.end());
     bytes.reserve(header.size() + image.pixels.size() * 4);
     for (int y = image.height - 1; y >= 0; --y) {
@@ -238,8 +237,7 @@ std::vector<unsigned char> encodeImage(const fs::path& destination, const Image&
 {
     const ImageFormat* format = outputFormatOf(destination);
     if (format == nullptr)
-        throw std::runtime_error("cannot write " + destination.string() +
-                                 ": unknown image format");
+        throw std::runtime_error("cannot write " + destination.string() + ": unknown image format");
     if (lowerCaseExtension(destination) == ".pfm")
         return encodePfm(destination, image);
 

@@ -50,8 +50,7 @@ void writeImage(const std::filesystem::path& path, const Image& image,
 // its extension names, with `attributes` where the format holds them. `channelNames`, where
 // the format names channels (EXR): one per channel; empty, the format's default (R, G, B, A).
 // Throws std::runtime_error naming `destination` when the format cannot hold the image.
-std::vector<unsigned char> encodeImage(const std::filesystem::path& destination,
-                                       const Image& image,
+std::vector<unsigned char> encodeImage(const std::filesystem::path& destination, const Image& image,
                                        const std::vector<ImageAttribute>& attributes,
                                        const std::vector<std::string>& channelNames = {});
 

@@ -45,8 +45,8 @@ const ImageFormat& imageFormatOf(const std::filesystem::path& path)
         std::vector<const ImageFormat*> all;
         for (const ImageFormat& known : outputFormats())
             all.push_back(&known);
-        throw std::runtime_error(path.string() + ": unknown image format (" +
-                                 listExtensions(all) + ")");
+        throw std::runtime_error(path.string() + ": unknown image format (" + listExtensions(all) +
+                                 ")");
     }
     return *format;
 }

@@ -22,9 +22,8 @@ thread_local std::string firstMessage;
 extern "C" void keepFirstMessage(exr_const_context_t, exr_result_t code, const char* message)
 {
     if (firstMessage.empty())
-        firstMessage = message != nullptr && *message != '\0'
-                           ? message
-                           : exr_get_default_error_message(code);
+        firstMessage =
+            message != nullptr && *message != '\0' ? message : exr_get_default_error_message(code);
 }
 
 extern "C" int64_t readAt(exr_const_context_t, void* userData, void* buffer, uint64_t size,
@@ -79,18 +78,16 @@ ImageLayout checkOpenExrHeader(std::FILE* file, std::int64_t fileSize, const std
         if (storage == EXR_STORAGE_TILED) {
             uint32_t tileWidth = 0;
             uint32_t tileHeight = 0;
-            result = exr_get_tile_descriptor(context, 0, &tileWidth, &tileHeight, nullptr,
-                                             nullptr);
+            result = exr_get_tile_descriptor(context, 0, &tileWidth, &tileHeight, nullptr, nullptr);
             layout.tileWidth = static_cast<int>(tileWidth);
             layout.tileHeight = static_cast<int>(tileHeight);
         }
     }
     exr_finish(&context);
     if (result != EXR_ERR_SUCCESS)
-        throw std::runtime_error("cannot read image " + name + ": not a readable exr file (" +
-                                 (firstMessage.empty() ? exr_get_default_error_message(result)
-                                                       : firstMessage) +
-                                 ")");
+        throw std::runtime_error(
+            "cannot read image " + name + ": not a readable exr file (" +
+            (firstMessage.empty() ? exr_get_default_error_message(result) : firstMessage) + ")");
     return layout;
 }
 

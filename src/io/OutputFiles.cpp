@@ -96,7 +96,8 @@ std::optional<TemporaryOwner> ownerOfTemporary(const std::string& name, const fs
 {
     const std::string prefix = temporaryPrefix(destination);
     const std::string extension = destination.extension().string();
-    if (name.size() <= prefix.size() + extension.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+    if (name.size() <= prefix.size() + extension.size() ||
+        name.compare(0, prefix.size(), prefix) != 0 ||
         name.compare(name.size() - extension.size(), extension.size(), extension) != 0)
         return std::nullopt;
     const std::string middle =
@@ -170,8 +171,7 @@ void writeBytes(const fs::path& file, const fs::path& destination,
 }
 
 // Messages name the user's path: one about the temporary file is rewritten.
-std::string aboutDestination(std::string message, const fs::path& file,
-                             const fs::path& destination)
+std::string aboutDestination(std::string message, const fs::path& file, const fs::path& destination)
 {
     const std::string from = file.string();
     for (std::size_t at; !from.empty() && (at = message.find(from)) != std::string::npos;)
@@ -190,8 +190,8 @@ void checkReadsBack(const fs::path& file, const OutputImage& output)
                                 aboutDestination(error.what(), file, output.path) + ")");
     }
     if (header.width != output.image.width || header.height != output.image.height)
-        refuse(output.path, "the file written reads back as " + std::to_string(header.width) +
-                                "x" + std::to_string(header.height) + ", not " +
+        refuse(output.path, "the file written reads back as " + std::to_string(header.width) + "x" +
+                                std::to_string(header.height) + ", not " +
                                 std::to_string(output.image.width) + "x" +
                                 std::to_string(output.image.height));
 }
@@ -230,9 +230,8 @@ std::vector<std::pair<fs::path, fs::path>> foldersOf(const std::vector<OutputIma
 fs::path temporaryNameFor(const fs::path& destination, std::size_t index)
 {
     return folderOf(destination) /
-           (temporaryPrefix(destination) + hostNameForFiles() + "-" +
-            std::to_string(::getpid()) + "-" + std::to_string(index) +
-            destination.extension().string());
+           (temporaryPrefix(destination) + hostNameForFiles() + "-" + std::to_string(::getpid()) +
+            "-" + std::to_string(index) + destination.extension().string());
 }
 
 void checkOutputsCanBeWritten(const std::vector<OutputRequest>& outputs)

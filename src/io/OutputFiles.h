@@ -59,13 +59,12 @@ struct StaleTemporary {
 };
 
 // The name writeAllOrNothing writes the `index`th of its images under before it renames it.
-std::filesystem::path temporaryNameFor(const std::filesystem::path& destination,
-                                       std::size_t index);
+std::filesystem::path temporaryNameFor(const std::filesystem::path& destination, std::size_t index);
 
 // Removes the temporary files of these destinations (by their names, above) whose process no
 // longer runs on this machine, and returns them. Temporaries of processes still running, of
 // other machines (a folder shared over the network) and of other destinations are left.
-std::vector<StaleTemporary> removeStaleTemporaries(
-    const std::vector<std::filesystem::path>& destinations);
+std::vector<StaleTemporary>
+removeStaleTemporaries(const std::vector<std::filesystem::path>& destinations);
 
 }  // namespace io

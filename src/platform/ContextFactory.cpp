@@ -49,7 +49,8 @@ private:
 // "1 device: EGL software device" for messages.
 std::string listDevices(const std::vector<EglDevice>& devices)
 {
-    std::string text = std::to_string(devices.size()) + (devices.size() == 1 ? " device" : " devices");
+    std::string text =
+        std::to_string(devices.size()) + (devices.size() == 1 ? " device" : " devices");
     for (std::size_t i = 0; i < devices.size(); ++i)
         text += (i == 0 ? ": " : ", ") + devices[i].kind();
     return text;
@@ -58,8 +59,7 @@ std::string listDevices(const std::vector<EglDevice>& devices)
 // EGL on a GPU (the one asked for, else each in turn), then, unless `gpusOnly`, on Mesa's
 // software device and on Mesa's surfaceless platform. Null when none works; the reasons are
 // in `attempts`.
-std::unique_ptr<GlContext> tryEgl(const ContextRequest& request, bool gpusOnly,
-                                  Attempts& attempts)
+std::unique_ptr<GlContext> tryEgl(const ContextRequest& request, bool gpusOnly, Attempts& attempts)
 {
     std::vector<EglDevice> devices;
     try {
@@ -74,7 +74,8 @@ std::unique_ptr<GlContext> tryEgl(const ContextRequest& request, bool gpusOnly,
         ++gpus;
         if (request.gpuIndex && device.gpuIndex != *request.gpuIndex)
             continue;
-        if (auto context = attempts.attempt(device.kind(), [&] { return EglContext::onDevice(device); }))
+        if (auto context =
+                attempts.attempt(device.kind(), [&] { return EglContext::onDevice(device); }))
             return context;
     }
     if (request.gpuIndex) {
@@ -106,11 +107,16 @@ std::unique_ptr<GlContext> tryOsMesa(Attempts& attempts)
 const char* contextKindName(ContextKind kind)
 {
     switch (kind) {
-    case ContextKind::Automatic: return "auto";
-    case ContextKind::Egl: return "egl";
-    case ContextKind::Gpu: return "gpu";
-    case ContextKind::OsMesa: return "osmesa";
-    case ContextKind::Window: return "window";
+    case ContextKind::Automatic:
+        return "auto";
+    case ContextKind::Egl:
+        return "egl";
+    case ContextKind::Gpu:
+        return "gpu";
+    case ContextKind::OsMesa:
+        return "osmesa";
+    case ContextKind::Window:
+        return "window";
     }
     return "?";
 }
@@ -136,10 +142,12 @@ bool makesHeadlessContext(const ContextRequest& request)
     switch (request.kind) {
     case ContextKind::Automatic:
         return request.headless || request.gpuIndex || !displayAvailable();
-    case ContextKind::Window: return false;
+    case ContextKind::Window:
+        return false;
     case ContextKind::Egl:
     case ContextKind::Gpu:
-    case ContextKind::OsMesa: return true;
+    case ContextKind::OsMesa:
+        return true;
     }
     return true;
 }

@@ -55,9 +55,8 @@ std::unique_ptr<EglContext> EglContext::surfaceless()
     const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (client == nullptr || std::strstr(client, "EGL_MESA_platform_surfaceless") == nullptr)
         throw std::runtime_error("libEGL lacks EGL_MESA_platform_surfaceless");
-    return std::unique_ptr<EglContext>(
-        new EglContext(platformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY),
-                       "EGL surfaceless"));
+    return std::unique_ptr<EglContext>(new EglContext(
+        platformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY), "EGL surfaceless"));
 }
 
 EglContext::EglContext(void* display, const std::string& kind) : display_(display)
@@ -68,8 +67,8 @@ EglContext::EglContext(void* display, const std::string& kind) : display_(displa
         if (!eglInitialize(display_, &major, &minor))
             throw std::runtime_error("eglInitialize failed: " + lastEglError());
         if (!eglBindAPI(EGL_OPENGL_API))
-            throw std::runtime_error("the display offers no desktop OpenGL (eglBindAPI: " +
-                                     lastEglError() + ")");
+            throw std::runtime_error(
+                "the display offers no desktop OpenGL (eglBindAPI: " + lastEglError() + ")");
 
         // A context without a config where the driver allows it (every surface it could
         // draw to is a framebuffer object); else any config that can make a pbuffer.

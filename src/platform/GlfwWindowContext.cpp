@@ -29,27 +29,42 @@ void* glfwLoader(const char* name)
 std::optional<Key> keyOf(int glfwKey)
 {
     switch (glfwKey) {
-    case GLFW_KEY_W: return Key::W;
-    case GLFW_KEY_A: return Key::A;
-    case GLFW_KEY_S: return Key::S;
-    case GLFW_KEY_D: return Key::D;
-    case GLFW_KEY_Q: return Key::Q;
-    case GLFW_KEY_E: return Key::E;
-    case GLFW_KEY_R: return Key::R;
-    case GLFW_KEY_TAB: return Key::Tab;
-    case GLFW_KEY_C: return Key::C;
-    case GLFW_KEY_N: return Key::N;
-    default: return std::nullopt;
+    case GLFW_KEY_W:
+        return Key::W;
+    case GLFW_KEY_A:
+        return Key::A;
+    case GLFW_KEY_S:
+        return Key::S;
+    case GLFW_KEY_D:
+        return Key::D;
+    case GLFW_KEY_Q:
+        return Key::Q;
+    case GLFW_KEY_E:
+        return Key::E;
+    case GLFW_KEY_R:
+        return Key::R;
+    case GLFW_KEY_TAB:
+        return Key::Tab;
+    case GLFW_KEY_C:
+        return Key::C;
+    case GLFW_KEY_N:
+        return Key::N;
+    default:
+        return std::nullopt;
     }
 }
 
 std::optional<int> buttonIndex(int glfwButton)
 {
     switch (glfwButton) {
-    case GLFW_MOUSE_BUTTON_LEFT: return static_cast<int>(MouseButton::Left);
-    case GLFW_MOUSE_BUTTON_RIGHT: return static_cast<int>(MouseButton::Right);
-    case GLFW_MOUSE_BUTTON_MIDDLE: return static_cast<int>(MouseButton::Middle);
-    default: return std::nullopt;
+    case GLFW_MOUSE_BUTTON_LEFT:
+        return static_cast<int>(MouseButton::Left);
+    case GLFW_MOUSE_BUTTON_RIGHT:
+        return static_cast<int>(MouseButton::Right);
+    case GLFW_MOUSE_BUTTON_MIDDLE:
+        return static_cast<int>(MouseButton::Middle);
+    default:
+        return std::nullopt;
     }
 }
 
@@ -144,9 +159,8 @@ WindowInput GlfwWindowContext::takeInput()
     pendingInput_ = false;
     for (int button = 0; button < kMouseButtonCount; ++button)
         input_.down[button] = input.down[button];
-    const int glfwKeys[kKeyCount] = {GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S, GLFW_KEY_D,
-                                     GLFW_KEY_Q, GLFW_KEY_E, GLFW_KEY_R, GLFW_KEY_TAB, GLFW_KEY_C,
-                                     GLFW_KEY_N};
+    const int glfwKeys[kKeyCount] = {GLFW_KEY_W, GLFW_KEY_A, GLFW_KEY_S,   GLFW_KEY_D, GLFW_KEY_Q,
+                                     GLFW_KEY_E, GLFW_KEY_R, GLFW_KEY_TAB, GLFW_KEY_C, GLFW_KEY_N};
     for (int key = 0; key < kKeyCount; ++key)
         input.keyHeld[key] = glfwGetKey(window_, glfwKeys[key]) == GLFW_PRESS;
     input.shiftHeld = glfwGetKey(window_, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||

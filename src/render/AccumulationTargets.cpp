@@ -54,7 +54,8 @@ std::vector<float> texelsOf(const io::Image& image)
 }  // namespace
 
 AccumulationTargets::AccumulationTargets(int width, int height, bool features)
-    : width_(width), height_(height),
+    : width_(width),
+      height_(height),
       sets_{makeEmptySet(width, height, features), makeEmptySet(width, height, features)}
 {
     gl::throwOnGlError("creating the accumulation targets");

@@ -1,7 +1,7 @@
 #pragma once
+#include "film/Accumulation.h"
 #include "gl/Framebuffer.h"
 #include "gl/Texture.h"
-#include "film/Accumulation.h"
 
 #include <array>
 #include <optional>

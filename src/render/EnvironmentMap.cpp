@@ -35,8 +35,8 @@ void writeCumulative(const std::vector<double>& weights, float* out)
     out[0] = 0.0f;
     for (std::size_t i = 0; i < count; ++i) {
         running += weights[i];
-        out[i + 1] = static_cast<float>(total > 0.0 ? running / total
-                                                    : static_cast<double>(i + 1) / count);
+        out[i + 1] =
+            static_cast<float>(total > 0.0 ? running / total : static_cast<double>(i + 1) / count);
     }
     out[count] = 1.0f;
 }
@@ -45,8 +45,7 @@ void writeCumulative(const std::vector<double>& weights, float* out)
 
 double EnvironmentMap::texelSolidAngle(int row) const
 {
-    return 2.0 * kPi / width *
-           (std::cos(kPi * row / height) - std::cos(kPi * (row + 1) / height));
+    return 2.0 * kPi / width * (std::cos(kPi * row / height) - std::cos(kPi * (row + 1) / height));
 }
 
 double EnvironmentMap::texelProbability(int column, int row) const
@@ -65,8 +64,8 @@ EnvironmentMap buildEnvironmentMap(const io::Image& image)
     if (image.width > kMaxEnvironmentMapWidth || image.height > kMaxEnvironmentMapHeight)
         throw std::runtime_error(
             "the image is " + std::to_string(image.width) + "x" + std::to_string(image.height) +
-            "; an environment map may be at most " + std::to_string(kMaxEnvironmentMapWidth) +
-            "x" + std::to_string(kMaxEnvironmentMapHeight));
+            "; an environment map may be at most " + std::to_string(kMaxEnvironmentMapWidth) + "x" +
+            std::to_string(kMaxEnvironmentMapHeight));
     EnvironmentMap map;
     const int width = map.width = image.width;
     const int height = map.height = image.height;
@@ -139,8 +138,8 @@ EnvironmentMap loadEnvironmentMap(const std::filesystem::path& path)
     if (size.width > kMaxEnvironmentMapWidth || size.height > kMaxEnvironmentMapHeight)
         throw std::runtime_error(
             "the image is " + std::to_string(size.width) + "x" + std::to_string(size.height) +
-            "; an environment map may be at most " + std::to_string(kMaxEnvironmentMapWidth) +
-            "x" + std::to_string(kMaxEnvironmentMapHeight));
+            "; an environment map may be at most " + std::to_string(kMaxEnvironmentMapWidth) + "x" +
+            std::to_string(kMaxEnvironmentMapHeight));
     return buildEnvironmentMap(io::readImage(path));
 }
 

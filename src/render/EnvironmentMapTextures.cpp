@@ -32,8 +32,7 @@ EnvironmentMapTextures uploadEnvironmentMap(const EnvironmentMap& map)
     textures.distribution.bind(EnvironmentMapTextures::kDistributionUnit);
     glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, map.cumulativeWidth(), map.height + 1, 0, GL_RED,
                  GL_FLOAT, map.cumulative.data());
-    textures.distribution.setSampling(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE,
-                                      GL_CLAMP_TO_EDGE);
+    textures.distribution.setSampling(GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, GL_CLAMP_TO_EDGE);
     gl::throwOnGlError("uploading the environment map");
     return textures;
 }

@@ -73,8 +73,7 @@ KernelChoice chooseKernel(PathKernel asked)
         if (!computeKernelAvailable()) {
             const GLubyte* version = glGetString(GL_VERSION);
             throw std::runtime_error(
-                "the compute kernel needs OpenGL 4.3; this context (" + rendererName +
-                ") offers " +
+                "the compute kernel needs OpenGL 4.3; this context (" + rendererName + ") offers " +
                 (version != nullptr ? reinterpret_cast<const char*>(version) : "none") +
                 ": use --kernel fragment");
         }

@@ -26,9 +26,9 @@ constexpr int kComputeGroupHeight = 8;
 
 std::string computePreamble()
 {
-    return std::string(kComputeVersion) +
-           "#define COMPUTE_GROUP_WIDTH " + std::to_string(kComputeGroupWidth) + "\n" +
-           "#define COMPUTE_GROUP_HEIGHT " + std::to_string(kComputeGroupHeight) + "\n";
+    return std::string(kComputeVersion) + "#define COMPUTE_GROUP_WIDTH " +
+           std::to_string(kComputeGroupWidth) + "\n" + "#define COMPUTE_GROUP_HEIGHT " +
+           std::to_string(kComputeGroupHeight) + "\n";
 }
 
 gl::Program compileAndTime(PathKernel kernel, const shadergen::ShaderSource& source,
@@ -36,11 +36,10 @@ gl::Program compileAndTime(PathKernel kernel, const shadergen::ShaderSource& sou
 {
     const auto start = std::chrono::steady_clock::now();
     const auto explain = [&source](const std::string& log) { return source.explainLog(log); };
-    gl::Program program =
-        kernel == PathKernel::Compute
-            ? gl::Program::compute(source.text(), "the path tracer", explain)
-            : gl::Program(fullscreenVertexSource(shaderDirectory), source.text(),
-                          "the path tracer", explain);
+    gl::Program program = kernel == PathKernel::Compute
+                              ? gl::Program::compute(source.text(), "the path tracer", explain)
+                              : gl::Program(fullscreenVertexSource(shaderDirectory), source.text(),
+                                            "the path tracer", explain);
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return program;
 }
@@ -53,8 +52,7 @@ int groupsCovering(int pixels, int groupSide)
 }  // namespace
 
 shadergen::ShaderSource assemblePathTracerSource(const shadergen::SceneShaderCode& code,
-                                                 const fs::path& shaderDirectory,
-                                                 PathKernel kernel)
+                                                 const fs::path& shaderDirectory, PathKernel kernel)
 {
     if (kernel == PathKernel::Automatic)
         throw std::invalid_argument("assemblePathTracerSource needs a kernel chosen");
@@ -138,7 +136,8 @@ shadergen::ShaderSource assemblePathTracerSource(const shadergen::SceneShaderCod
 
 std::string fullscreenVertexSource(const fs::path& shaderDirectory)
 {
-    return kFragmentVersion + shadergen::readTextFile(shaderDirectory / "modules" / "fullscreen.vert");
+    return kFragmentVersion +
+           shadergen::readTextFile(shaderDirectory / "modules" / "fullscreen.vert");
 }
 
 PathTracerProgram::PathTracerProgram(const shadergen::ShaderSource& source, PathKernel kernel,
@@ -155,15 +154,13 @@ void PathTracerProgram::trace(const AccumulationTargets::Set& destination,
 {
     if (kernel_ == PathKernel::Compute) {
         uniforms_.set("uRegion", glm::ivec4(region.x, region.y, region.width, region.height));
-        glBindImageTexture(0, destination.estimate.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                           GL_RGBA32F);
-        glBindImageTexture(1, destination.moments.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                           GL_RGBA32F);
+        glBindImageTexture(0, destination.estimate.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+        glBindImageTexture(1, destination.moments.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
         if (destination.albedoDepth) {
             glBindImageTexture(2, destination.albedoDepth->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                                GL_RGBA32F);
-            glBindImageTexture(3, destination.normalCoverage->id(), 0, GL_FALSE, 0,
-                               GL_WRITE_ONLY, GL_RGBA32F);
+            glBindImageTexture(3, destination.normalCoverage->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                               GL_RGBA32F);
         }
         glDispatchCompute(static_cast<GLuint>(groupsCovering(region.width, kComputeGroupWidth)),
                           static_cast<GLuint>(groupsCovering(region.height, kComputeGroupHeight)),

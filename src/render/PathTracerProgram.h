@@ -17,9 +17,10 @@ namespace render {
 // modules in shaders/modules/ (only those its features need), the scene's user SDF files and
 // the generated scene code, ending with the kernel's entry module; see
 // assemblePathTracerSource for the order.
-shadergen::ShaderSource assemblePathTracerSource(
-    const shadergen::SceneShaderCode& code, const std::filesystem::path& shaderDirectory,
-    settings::PathKernel kernel = settings::PathKernel::Fragment);
+shadergen::ShaderSource
+assemblePathTracerSource(const shadergen::SceneShaderCode& code,
+                         const std::filesystem::path& shaderDirectory,
+                         settings::PathKernel kernel = settings::PathKernel::Fragment);
 
 // The vertex shader every pass uses: one triangle over the viewport.
 std::string fullscreenVertexSource(const std::filesystem::path& shaderDirectory);

@@ -43,9 +43,8 @@ void PreviewDenoiser::resize(int width, int height)
     height_ = height;
 }
 
-const gl::Texture& PreviewDenoiser::filter(const AccumulationTargets::Set& accumulation,
-                                           int width, int height,
-                                           const gl::VertexArray& triangle)
+const gl::Texture& PreviewDenoiser::filter(const AccumulationTargets::Set& accumulation, int width,
+                                           int height, const gl::VertexArray& triangle)
 {
     resize(width, height);
     program_.use();

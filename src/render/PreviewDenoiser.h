@@ -22,8 +22,8 @@ public:
     // Filters the lower-left width x height pixels of `accumulation` (which must have feature
     // targets); returns the texture holding the result (rgb: radiance), valid until the next
     // call.
-    const gl::Texture& filter(const AccumulationTargets::Set& accumulation, int width,
-                              int height, const gl::VertexArray& triangle);
+    const gl::Texture& filter(const AccumulationTargets::Set& accumulation, int width, int height,
+                              const gl::VertexArray& triangle);
 
     static constexpr int kPasses = 5;
 

@@ -137,10 +137,10 @@ void ProgressiveRenderer::uploadAll()
 {
     program_->program().use();
     ProgramUniforms& uniforms = program_->uniforms();
-    uploadUniforms(uniforms,
-                   {uniforms_, settings_, width(), height(),
-                    static_cast<float>(pigmentTextures_.size)},
-                   code_);
+    uploadUniforms(
+        uniforms,
+        {uniforms_, settings_, width(), height(), static_cast<float>(pigmentTextures_.size)},
+        code_);
     if (shadergen::specializesShapes(code_.variant)) {
         sceneData_.reset();
     } else {
@@ -261,10 +261,10 @@ void ProgressiveRenderer::resize(int width, int height)
 void ProgressiveRenderer::resumeFrom(const film::Accumulation& accumulation)
 {
     if (accumulation.width() != width() || accumulation.height() != height())
-        throw std::invalid_argument(
-            "cannot resume a " + std::to_string(accumulation.width()) + "x" +
-            std::to_string(accumulation.height()) + " accumulation in a " +
-            std::to_string(width()) + "x" + std::to_string(height()) + " render");
+        throw std::invalid_argument("cannot resume a " + std::to_string(accumulation.width()) +
+                                    "x" + std::to_string(accumulation.height()) +
+                                    " accumulation in a " + std::to_string(width()) + "x" +
+                                    std::to_string(height()) + " render");
     if (accumulation.hasFeatures() != settings_.featureBuffers)
         throw std::invalid_argument(
             accumulation.hasFeatures()
@@ -317,8 +317,8 @@ void ProgressiveRenderer::renderPreview(int divisor, int maxBounces)
     program_->program().use();
     ProgramUniforms& uniforms = program_->uniforms();
     // The camera spans the coarse grid, which fills the lower-left corner of the targets.
-    uniforms.set("uImageSize", glm::vec2(static_cast<float>(previewWidth),
-                                         static_cast<float>(previewHeight)));
+    uniforms.set("uImageSize",
+                 glm::vec2(static_cast<float>(previewWidth), static_cast<float>(previewHeight)));
     uniforms.set("uMaxBounces", std::min(maxBounces, settings_.maxBounces));
     setDrawUniforms(1, 0, 0);
     bindPrevious(targets_.previous());
@@ -383,8 +383,7 @@ int ProgressiveRenderer::fewestSamples() const
 
 // Traces up to `samples` paths per pixel, none beyond `target` samples in all, so that a
 // pixel a frame left short catches up.
-bool ProgressiveRenderer::drawFrame(const std::function<bool()>& keepGoing, int samples,
-                                    int target)
+bool ProgressiveRenderer::drawFrame(const std::function<bool()>& keepGoing, int samples, int target)
 {
     const auto frameStart = std::chrono::steady_clock::now();
     const AccumulationTargets::Set& source = targets_.previous();
@@ -412,8 +411,7 @@ bool ProgressiveRenderer::drawFrame(const std::function<bool()>& keepGoing, int 
         row += rows;
         // Aim the next bands at settings_.secondsPerBand each.
         if (settings_.secondsPerBand > 0.0) {
-            const double rowsForTarget =
-                rows * settings_.secondsPerBand / std::max(seconds, 1e-4);
+            const double rowsForTarget = rows * settings_.secondsPerBand / std::max(seconds, 1e-4);
             rowsPerBand_ = std::clamp(static_cast<int>(rowsForTarget), 1, traced.height);
         }
     }
@@ -468,7 +466,8 @@ film::Accumulation ProgressiveRenderer::accumulation() const
 
 std::pair<io::Image, io::Image> ProgressiveRenderer::accumulationTargets() const
 {
-    return {readTarget(targets_.previous().estimate, 4), readTarget(targets_.previous().moments, 4)};
+    return {readTarget(targets_.previous().estimate, 4),
+            readTarget(targets_.previous().moments, 4)};
 }
 
 std::uint64_t ProgressiveRenderer::discardedSamples() const

@@ -1,20 +1,20 @@
 #pragma once
+#include "film/Accumulation.h"
+#include "film/AdaptiveSampling.h"
 #include "gl/VertexArray.h"
 #include "io/Image.h"
-#include "film/Accumulation.h"
 #include "render/AccumulationTargets.h"
-#include "film/AdaptiveSampling.h"
 #include "render/EnvironmentMapTextures.h"
 #include "render/PathTracerProgram.h"
 #include "render/PreviewDenoiser.h"
 #include "render/ReloadDecision.h"
 #include "render/SceneDataBuffers.h"
-#include "settings/RenderSettings.h"
 #include "render/ScenePreparation.h"
 #include "render/SceneUniforms.h"
 #include "render/TextureArrayLoader.h"
 #include "render/ToneMapper.h"
 #include "scene/Scene.h"
+#include "settings/RenderSettings.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -152,8 +152,8 @@ public:
 private:
     ProgressiveRenderer(const KernelChoice& kernel, const scene::Scene& scene, int width,
                         int height, const settings::RenderSettings& settings);
-    ProgressiveRenderer(PreparedScene prepared, const KernelChoice& kernel, int width,
-                        int height, const settings::RenderSettings& settings);
+    ProgressiveRenderer(PreparedScene prepared, const KernelChoice& kernel, int width, int height,
+                        const settings::RenderSettings& settings);
     void uploadAll();
     void setDrawUniforms(int samplesPerFrame, int sampleTarget, int tileSize);
     void bindEnvironmentTextures() const;
@@ -174,7 +174,7 @@ private:
 
     settings::RenderSettings settings_;
     KernelChoice kernel_;  // never Automatic
-    scene::Scene scene_;  // without its invisible objects
+    scene::Scene scene_;   // without its invisible objects
     shadergen::SceneShaderCode code_;
     SceneUniforms uniforms_;
     std::unique_ptr<PathTracerProgram> program_;

@@ -1,6 +1,5 @@
 #include "render/ReloadDecision.h"
 
-
 #include <algorithm>
 
 namespace render {
@@ -46,15 +45,15 @@ bool sameCodeAndArrays(const shadergen::SceneShaderCode& a, const shadergen::Sce
 {
     return a.exactGeometry == b.exactGeometry && a.exactFunctions == b.exactFunctions &&
            a.profileCounters == b.profileCounters && a.marchesAnything == b.marchesAnything &&
-           a.marchedUnion == b.marchedUnion &&
-           a.shapeParameters == b.shapeParameters && a.shapeProgram == b.shapeProgram &&
-           a.objectProgramStart == b.objectProgramStart &&
+           a.marchedUnion == b.marchedUnion && a.shapeParameters == b.shapeParameters &&
+           a.shapeProgram == b.shapeProgram && a.objectProgramStart == b.objectProgramStart &&
            a.objectBounds == b.objectBounds && a.objectCullingBits == b.objectCullingBits;
 }
 
 }  // namespace
 
-ReloadDecision decideReload(const shadergen::SceneShaderCode& shownCode, const SceneUniforms& shownUniforms,
+ReloadDecision decideReload(const shadergen::SceneShaderCode& shownCode,
+                            const SceneUniforms& shownUniforms,
                             const shadergen::SceneShaderCode& editedCode,
                             const SceneUniforms& editedUniforms,
                             const std::vector<fs::path>& changedFiles)

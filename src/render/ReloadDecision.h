@@ -1,7 +1,7 @@
 #pragma once
-#include "shadergen/SceneShaderGenerator.h"
 #include "render/SceneUniforms.h"
 #include "scene/Scene.h"
+#include "shadergen/SceneShaderGenerator.h"
 
 #include <filesystem>
 #include <vector>
@@ -28,7 +28,8 @@ struct ReloadDecision {
 // `shown` / `edited`: the code generated for each scene and its numbers laid out as uniforms
 // (whose textureLayers are its texture files in layer order). `changedFiles`: the files whose
 // bytes changed on disk since the shown scene was loaded (interaction::FileWatcher).
-ReloadDecision decideReload(const shadergen::SceneShaderCode& shownCode, const SceneUniforms& shownUniforms,
+ReloadDecision decideReload(const shadergen::SceneShaderCode& shownCode,
+                            const SceneUniforms& shownUniforms,
                             const shadergen::SceneShaderCode& editedCode,
                             const SceneUniforms& editedUniforms,
                             const std::vector<std::filesystem::path>& changedFiles);

@@ -5,12 +5,12 @@
 // reads shader and image files, never GL state): the
 // renderer, `--features`, `--print-shader` and the benchmarks all prepare a scene here, so
 // they all see the same visible scene, features and source.
+#include "render/SceneUniforms.h"
+#include "scene/Scene.h"
 #include "settings/PathKernel.h"
 #include "settings/RenderSettings.h"
 #include "shadergen/SceneShaderGenerator.h"
-#include "render/SceneUniforms.h"
 #include "shadergen/ShaderSource.h"
-#include "scene/Scene.h"
 
 #include <filesystem>
 #include <memory>
@@ -18,9 +18,9 @@
 namespace render {
 
 struct PreparedScene {
-    scene::Scene visible;      // without its invisible objects (scene/InvisibleObjects.h)
-    shadergen::SceneShaderCode code;      // code.features: what the shader is built for
-    SceneUniforms uniforms;    // every number the shader reads from the scene
+    scene::Scene visible;             // without its invisible objects (scene/InvisibleObjects.h)
+    shadergen::SceneShaderCode code;  // code.features: what the shader is built for
+    SceneUniforms uniforms;           // every number the shader reads from the scene
     // The environment map, read and made ready for sampling; nullptr where there is none.
     std::shared_ptr<const EnvironmentMap> environmentMap;
     shadergen::ShaderSource pathTracerSource;  // for the kernel asked (fragment or compute)

@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <optional>
 #include <map>
+#include <optional>
 
 namespace render {
 
@@ -59,9 +59,11 @@ const std::vector<SceneValueUniform>& sceneValueUniforms()
         sceneValue<float>(
             "uFocusDistance", "camera.glsl", [](S s) { return s.scene.lens.focusDistance; },
             "HAS_THIN_LENS"),
-        sceneValue<glm::vec2>("uImageSize", "camera.glsl", [](S s) {
-            return glm::vec2(static_cast<float>(s.width), static_cast<float>(s.height));
-        }),
+        sceneValue<glm::vec2>("uImageSize", "camera.glsl",
+                              [](S s) {
+                                  return glm::vec2(static_cast<float>(s.width),
+                                                   static_cast<float>(s.height));
+                              }),
         sceneValue<float>("uPigmentTextureSize", "pigments.glsl",
                           [](S s) { return s.pigmentTextureSize; }),
         // The general shader, and the window's, read the environment's kind here (the panel
@@ -104,12 +106,11 @@ std::vector<shadergen::UniformDeclaration> pathTracerUniformDeclarations()
 
 bool SceneUniforms::operator==(const SceneUniforms& other) const
 {
-    return objects == other.objects && pigments == other.pigments &&
-           finishes == other.finishes && conductors == other.conductors &&
-           lights == other.lights && lens.apertureRadius == other.lens.apertureRadius &&
+    return objects == other.objects && pigments == other.pigments && finishes == other.finishes &&
+           conductors == other.conductors && lights == other.lights &&
+           lens.apertureRadius == other.lens.apertureRadius &&
            lens.focusDistance == other.lens.focusDistance &&
-           sphereLightPieces == other.sphereLightPieces &&
-           textureLayers == other.textureLayers &&
+           sphereLightPieces == other.sphereLightPieces && textureLayers == other.textureLayers &&
            cameraFrame.right == other.cameraFrame.right &&
            cameraFrame.trueUp == other.cameraFrame.trueUp &&
            cameraFrame.forward == other.cameraFrame.forward && cameraEye == other.cameraEye &&
@@ -283,8 +284,7 @@ SceneUniforms packSceneUniforms(const Scene& scene, const shadergen::SceneShader
 
     packed.cameraFrame = cameraFrame(scene.camera);
     packed.cameraEye = scene.camera.eye;
-    packed.tanHalfFovy =
-        std::tan(0.5f * scene.camera.verticalFieldOfViewDegrees * kPi / 180.0f);
+    packed.tanHalfFovy = std::tan(0.5f * scene.camera.verticalFieldOfViewDegrees * kPi / 180.0f);
     packed.lens = scene.camera.lens.value_or(ThinLens{});
     packed.environment = scene.environment;
     if (!shadergen::specializesShapes(code.variant))

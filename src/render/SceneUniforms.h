@@ -1,11 +1,11 @@
 #pragma once
 #include "render/EnvironmentMap.h"
+#include "scene/Scene.h"
+#include "scene/SceneBounds.h"
 #include "settings/OptionValues.h"
 #include "settings/RenderSettings.h"
 #include "shadergen/SceneShaderGenerator.h"
 #include "shadergen/UniformBlock.h"
-#include "scene/Scene.h"
-#include "scene/SceneBounds.h"
 
 #include <glm/glm.hpp>
 

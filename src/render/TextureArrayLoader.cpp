@@ -16,16 +16,14 @@ OIIO::ImageBuf readAsRgb8(const std::filesystem::path& file)
 {
     OIIO::ImageBuf image(file.string());
     if (!image.read(0, 0, true, OIIO::TypeDesc::UINT8))
-        throw std::runtime_error("cannot read texture " + file.string() + ": " +
-                                 image.geterror());
+        throw std::runtime_error("cannot read texture " + file.string() + ": " + image.geterror());
     const int channels = image.spec().nchannels;
     if (channels == 3)
         return image;
     // Grey images are repeated into three channels; alpha and extra channels are dropped.
     const int grey[3] = {0, 0, 0};
     const int rgb[3] = {0, 1, 2};
-    OIIO::ImageBuf converted =
-        OIIO::ImageBufAlgo::channels(image, 3, channels < 3 ? grey : rgb);
+    OIIO::ImageBuf converted = OIIO::ImageBufAlgo::channels(image, 3, channels < 3 ? grey : rgb);
     if (converted.has_error())
         throw std::runtime_error("cannot use texture " + file.string() + ": " +
                                  converted.geterror());
@@ -61,8 +59,8 @@ PigmentTextures loadPigmentTextures(const std::vector<std::filesystem::path>& fi
         resized.get_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, 3), OIIO::TypeDesc::UINT8,
                            pixels.data());
         // The file's first row goes to t = 0, as the original program uploaded it.
-        glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, static_cast<GLint>(layer), width, height,
-                        1, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
+        glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, static_cast<GLint>(layer), width, height, 1,
+                        GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
     }
     glGenerateMipmap(GL_TEXTURE_2D_ARRAY);
     result.texture.setSampling(GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPEAT);

@@ -1,11 +1,11 @@
 #include "render/ToneMapper.h"
 
+#include "film/ToneCurve.h"
 #include "gl/Framebuffer.h"
 #include "gl/GlError.h"
 #include "render/PathTracerProgram.h"
-#include "shadergen/ShaderSource.h"
-#include "film/ToneCurve.h"
 #include "settings/SettingsTable.h"
+#include "shadergen/ShaderSource.h"
 
 #include <vector>
 

@@ -22,9 +22,8 @@ public:
 
     // Draws `estimate` (its lower-left width x height texels) to whatever framebuffer is
     // bound, of size target.
-    void draw(const gl::Texture& estimate, int width, int height, int targetWidth,
-              int targetHeight, const gl::VertexArray& triangle,
-              float exposure = kDefaultExposure,
+    void draw(const gl::Texture& estimate, int width, int height, int targetWidth, int targetHeight,
+              const gl::VertexArray& triangle, float exposure = kDefaultExposure,
               settings::ToneCurveKind curve = film::ToneCurve::kDefaultCurve) const;
 
     // The tone-mapped picture of `estimate` as display values in [0, 1], top row first.

@@ -8,9 +8,9 @@ const std::vector<CsgOperatorDescription>& csgOperatorDescriptions()
 {
     static const std::vector<CsgOperatorDescription> descriptions = [] {
         std::vector<CsgOperatorDescription> list;
-#define SCENE_CSG_DESCRIPTION(kind, keyword, smoothingWord, function, combination, smoothing)     \
-    list.push_back({CsgOperator::kind, static_cast<int>(list.size()), #kind, keyword,             \
-                    smoothingWord, function, CsgCombination::combination,                         \
+#define SCENE_CSG_DESCRIPTION(kind, keyword, smoothingWord, function, combination, smoothing)      \
+    list.push_back({CsgOperator::kind, static_cast<int>(list.size()), #kind, keyword,              \
+                    smoothingWord, function, CsgCombination::combination,                          \
                     CsgSmoothing::smoothing});
         SCENE_CSG_OPERATORS(SCENE_CSG_DESCRIPTION)
 #undef SCENE_CSG_DESCRIPTION

@@ -25,19 +25,19 @@ enum class CsgSmoothing {
 };
 
 //  X(kind, keyword, smoothing word or "", GLSL function, combination, smoothing), in code order
-#define SCENE_CSG_OPERATORS(X)                                                                    \
-    X(Union, "union", "", "opUnion", Union, Sharp)                                                \
-    X(Intersection, "intersection", "", "opIntersection", Intersection, Sharp)                    \
-    X(Difference, "difference", "", "opDifference", Difference, Sharp)                            \
-    X(SmoothUnion, "smooth_union", "exp", "opSmoothUnionExp", Union, Exponential)                 \
-    X(SmoothIntersection, "smooth_intersection", "exp", "opSmoothIntersectionExp", Intersection,  \
-      Exponential)                                                                                \
-    X(SmoothDifference, "smooth_difference", "exp", "opSmoothDifferenceExp", Difference,          \
-      Exponential)                                                                                \
-    X(PolynomialSmoothUnion, "smooth_union", "poly", "opSmoothUnionPoly", Union, Polynomial)      \
-    X(PolynomialSmoothIntersection, "smooth_intersection", "poly", "opSmoothIntersectionPoly",    \
-      Intersection, Polynomial)                                                                   \
-    X(PolynomialSmoothDifference, "smooth_difference", "poly", "opSmoothDifferencePoly",          \
+#define SCENE_CSG_OPERATORS(X)                                                                     \
+    X(Union, "union", "", "opUnion", Union, Sharp)                                                 \
+    X(Intersection, "intersection", "", "opIntersection", Intersection, Sharp)                     \
+    X(Difference, "difference", "", "opDifference", Difference, Sharp)                             \
+    X(SmoothUnion, "smooth_union", "exp", "opSmoothUnionExp", Union, Exponential)                  \
+    X(SmoothIntersection, "smooth_intersection", "exp", "opSmoothIntersectionExp", Intersection,   \
+      Exponential)                                                                                 \
+    X(SmoothDifference, "smooth_difference", "exp", "opSmoothDifferenceExp", Difference,           \
+      Exponential)                                                                                 \
+    X(PolynomialSmoothUnion, "smooth_union", "poly", "opSmoothUnionPoly", Union, Polynomial)       \
+    X(PolynomialSmoothIntersection, "smooth_intersection", "poly", "opSmoothIntersectionPoly",     \
+      Intersection, Polynomial)                                                                    \
+    X(PolynomialSmoothDifference, "smooth_difference", "poly", "opSmoothDifferencePoly",           \
       Difference, Polynomial)
 
 enum class CsgOperator {

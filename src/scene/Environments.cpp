@@ -52,7 +52,7 @@ const std::vector<EnvironmentDescription>& environmentDescriptions()
 {
     static const std::vector<EnvironmentDescription> descriptions = [] {
         std::vector<EnvironmentDescription> list;
-#define SCENE_ENVIRONMENT_DESCRIPTION(kind, keyword, alias, featureSwitch, reader)                \
+#define SCENE_ENVIRONMENT_DESCRIPTION(kind, keyword, alias, featureSwitch, reader)                 \
     list.push_back({EnvironmentKind::kind, static_cast<int>(list.size()), #kind, keyword, alias,   \
                     featureSwitch, reader});
         SCENE_ENVIRONMENTS(SCENE_ENVIRONMENT_DESCRIPTION)
@@ -70,7 +70,8 @@ const EnvironmentDescription& describe(EnvironmentKind kind)
 const EnvironmentDescription* findEnvironmentKind(const std::string& word)
 {
     for (const EnvironmentDescription& description : environmentDescriptions())
-        if (word == description.keyword || (*description.alias != '\0' && word == description.alias))
+        if (word == description.keyword ||
+            (*description.alias != '\0' && word == description.alias))
             return &description;
     return nullptr;
 }

@@ -28,10 +28,10 @@ void readEnvironmentColour(TokenCursor& in, const FileLookup& lookup, Environmen
 void readEnvironmentMap(TokenCursor& in, const FileLookup& lookup, Environment& environment);
 
 //  X(kind, keyword, another word for it or "", feature switch or nullptr, reader), in code order
-#define SCENE_ENVIRONMENTS(X)                                                   \
-    X(None, "none", "black", nullptr, readNoArguments)                          \
-    X(Sky, "sky", "", nullptr, readNoArguments)                                 \
-    X(Constant, "constant", "", nullptr, readEnvironmentColour)                 \
+#define SCENE_ENVIRONMENTS(X)                                                                      \
+    X(None, "none", "black", nullptr, readNoArguments)                                             \
+    X(Sky, "sky", "", nullptr, readNoArguments)                                                    \
+    X(Constant, "constant", "", nullptr, readEnvironmentColour)                                    \
     X(Map, "map", "", "HAS_ENVIRONMENT_MAP", readEnvironmentMap)
 
 enum class EnvironmentKind {
@@ -59,8 +59,8 @@ struct Environment {
 
 struct EnvironmentDescription {
     EnvironmentKind kind;
-    int code;                   // its place in the list; the shaders' ENVIRONMENT_<IDENTIFIER>
-    const char* identifier;     // the enumerator's name
+    int code;                // its place in the list; the shaders' ENVIRONMENT_<IDENTIFIER>
+    const char* identifier;  // the enumerator's name
     const char* keyword;
     const char* alias;          // "" for none
     const char* featureSwitch;  // 1 where the shader has the kind's code; nullptr: always there

@@ -9,8 +9,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::optional<fs::path> firstExisting(const std::vector<fs::path>& folders,
-                                      const std::string& name)
+std::optional<fs::path> firstExisting(const std::vector<fs::path>& folders, const std::string& name)
 {
     for (const fs::path& folder : folders) {
         const fs::path candidate = folder / name;

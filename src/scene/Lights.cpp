@@ -86,8 +86,8 @@ const std::vector<LightDescription>& lightDescriptions()
 {
     static const std::vector<LightDescription> descriptions = [] {
         std::vector<LightDescription> list;
-#define SCENE_LIGHT_DESCRIPTION(kind, name, featureSwitch, glslPrefix, emitter, lister, power)  \
-    list.push_back({LightKind::kind, static_cast<int>(list.size()), #kind, name, featureSwitch,  \
+#define SCENE_LIGHT_DESCRIPTION(kind, name, featureSwitch, glslPrefix, emitter, lister, power)     \
+    list.push_back({LightKind::kind, static_cast<int>(list.size()), #kind, name, featureSwitch,    \
                     glslPrefix, emitter, lister, power});
         SCENE_LIGHTS(SCENE_LIGHT_DESCRIPTION)
 #undef SCENE_LIGHT_DESCRIPTION

@@ -34,13 +34,13 @@ double sphereLightPower(const Light& light, const LightPowerContext& context);
 double environmentLightPower(const Light& light, const LightPowerContext& context);
 
 //  X(kind, name, feature switch, GLSL prefix, emitter, lister, power), in code order
-#define SCENE_LIGHTS(X)                                                                        \
-    X(Point, "point", "HAS_POINT_LIGHTS", "pointLight", Emitter::DeltaPosition,                \
-      listPointLights, pointLightPower)                                                        \
-    X(Sphere, "sphere", "HAS_SPHERE_LIGHTS", "sphereLight", Emitter::Surface,                  \
-      listSphereLights, sphereLightPower)                                                      \
-    X(Environment, "environment", "HAS_ENVIRONMENT_LIGHT", "environmentLight",                 \
-      Emitter::Infinite, listEnvironmentLights, environmentLightPower)
+#define SCENE_LIGHTS(X)                                                                            \
+    X(Point, "point", "HAS_POINT_LIGHTS", "pointLight", Emitter::DeltaPosition, listPointLights,   \
+      pointLightPower)                                                                             \
+    X(Sphere, "sphere", "HAS_SPHERE_LIGHTS", "sphereLight", Emitter::Surface, listSphereLights,    \
+      sphereLightPower)                                                                            \
+    X(Environment, "environment", "HAS_ENVIRONMENT_LIGHT", "environmentLight", Emitter::Infinite,  \
+      listEnvironmentLights, environmentLightPower)
 
 // Where the light comes from, which says how rays meet it (Mitsuba 3's emitter flags name the
 // same distinctions).
@@ -83,8 +83,8 @@ struct LightPowerContext {
 
 struct LightDescription {
     LightKind kind;
-    int code;                   // its place in the list; the shaders' LIGHT_<IDENTIFIER>
-    const char* identifier;     // the enumerator's name
+    int code;                // its place in the list; the shaders' LIGHT_<IDENTIFIER>
+    const char* identifier;  // the enumerator's name
     const char* name;
     const char* featureSwitch;  // 1 where the shader has the kind
     const char* glslPrefix;     // its functions <prefix>Sample and <prefix>Pdf

@@ -49,8 +49,10 @@ void readRoughConductor(TokenCursor& in, const std::string& which, Finish& finis
     const unsigned char first = static_cast<unsigned char>(word->text.front());
     if (std::isalpha(first) && findFinishKeyword(word->text) == nullptr &&
         word->text != "environment")
-        in.fail("a metal (" + namedMetalKeywords() + "), 'ior' and six numbers, or the next "
-                "finish (" + which + ")");
+        in.fail("a metal (" + namedMetalKeywords() +
+                "), 'ior' and six numbers, or the next "
+                "finish (" +
+                which + ")");
 }
 
 // rough_dielectric ALPHA IOR
@@ -70,9 +72,9 @@ const std::vector<MaterialDescription>& materialDescriptions()
 {
     static const std::vector<MaterialDescription> descriptions = [] {
         std::vector<MaterialDescription> list;
-#define SCENE_MATERIAL_DESCRIPTION(kind, name, keyword, reader, featureSwitch, glslPrefix,       \
-                                   scattering, model)                                            \
-    list.push_back({MaterialKind::kind, static_cast<int>(list.size()), #kind, name, keyword,     \
+#define SCENE_MATERIAL_DESCRIPTION(kind, name, keyword, reader, featureSwitch, glslPrefix,         \
+                                   scattering, model)                                              \
+    list.push_back({MaterialKind::kind, static_cast<int>(list.size()), #kind, name, keyword,       \
                     reader, featureSwitch, glslPrefix, scattering, model});
         SCENE_MATERIALS(SCENE_MATERIAL_DESCRIPTION)
 #undef SCENE_MATERIAL_DESCRIPTION
@@ -102,8 +104,8 @@ std::string finishKeywords()
             keywords.push_back(description.keyword);
     std::string words;
     for (std::size_t i = 0; i < keywords.size(); ++i)
-        words += std::string(i == 0 ? "" : (i + 1 == keywords.size() ? " or " : ", ")) +
-                 keywords[i];
+        words +=
+            std::string(i == 0 ? "" : (i + 1 == keywords.size() ? " or " : ", ")) + keywords[i];
     return words;
 }
 

@@ -26,18 +26,18 @@ struct Finish;
 
 //  X(kind, name, keyword or nullptr, reader or nullptr, feature switch or nullptr, GLSL prefix,
 //    scattering, model), in code order
-#define SCENE_MATERIALS(X)                                                                    \
-    X(Lambertian, "lambertian", nullptr, nullptr, nullptr, "lambertian", Scattering::Spread,  \
-      Model::Classic)                                                                         \
-    X(BlinnPhong, "blinn-phong", nullptr, nullptr, "HAS_BLINN_PHONG", "blinnPhong",           \
-      Scattering::Spread, Model::Classic)                                                     \
-    X(Mirror, "mirror", nullptr, nullptr, "HAS_MIRROR", "mirror", Scattering::Delta,          \
-      Model::Classic)                                                                         \
-    X(Dielectric, "dielectric", nullptr, nullptr, "HAS_DIELECTRIC", "dielectric",             \
-      Scattering::Delta, Model::Classic)                                                      \
-    X(RoughConductor, "rough-conductor", "rough_conductor", readRoughConductor,               \
-      "HAS_ROUGH_CONDUCTOR", "roughConductor", Scattering::Spread, Model::Microfacet)         \
-    X(RoughDielectric, "rough-dielectric", "rough_dielectric", readRoughDielectric,           \
+#define SCENE_MATERIALS(X)                                                                         \
+    X(Lambertian, "lambertian", nullptr, nullptr, nullptr, "lambertian", Scattering::Spread,       \
+      Model::Classic)                                                                              \
+    X(BlinnPhong, "blinn-phong", nullptr, nullptr, "HAS_BLINN_PHONG", "blinnPhong",                \
+      Scattering::Spread, Model::Classic)                                                          \
+    X(Mirror, "mirror", nullptr, nullptr, "HAS_MIRROR", "mirror", Scattering::Delta,               \
+      Model::Classic)                                                                              \
+    X(Dielectric, "dielectric", nullptr, nullptr, "HAS_DIELECTRIC", "dielectric",                  \
+      Scattering::Delta, Model::Classic)                                                           \
+    X(RoughConductor, "rough-conductor", "rough_conductor", readRoughConductor,                    \
+      "HAS_ROUGH_CONDUCTOR", "roughConductor", Scattering::Spread, Model::Microfacet)              \
+    X(RoughDielectric, "rough-dielectric", "rough_dielectric", readRoughDielectric,                \
       "HAS_ROUGH_DIELECTRIC", "roughDielectric", Scattering::Spread, Model::Microfacet)
 
 // Delta: a single direction for each incoming one (mirror, glass), which no light sample
@@ -60,8 +60,8 @@ enum class MaterialKind {
 
 struct MaterialDescription {
     MaterialKind kind;
-    int code;                   // its place in the list; the shaders' MATERIAL_<IDENTIFIER>
-    const char* identifier;     // the enumerator's name
+    int code;                // its place in the list; the shaders' MATERIAL_<IDENTIFIER>
+    const char* identifier;  // the enumerator's name
     const char* name;
     const char* keyword;        // the finish's first word in a scene file; nullptr: classic
     FinishReader read;          // the numbers after the keyword; nullptr: classic

@@ -39,8 +39,8 @@ const std::vector<PigmentDescription>& pigmentDescriptions()
 {
     static const std::vector<PigmentDescription> descriptions = [] {
         std::vector<PigmentDescription> list;
-#define SCENE_PIGMENT_DESCRIPTION(kind, keyword, featureSwitch, reader, glslFunction)             \
-    list.push_back({PigmentKind::kind, static_cast<int>(list.size()), #kind, keyword,             \
+#define SCENE_PIGMENT_DESCRIPTION(kind, keyword, featureSwitch, reader, glslFunction)              \
+    list.push_back({PigmentKind::kind, static_cast<int>(list.size()), #kind, keyword,              \
                     featureSwitch, reader, glslFunction});
         SCENE_PIGMENTS(SCENE_PIGMENT_DESCRIPTION)
 #undef SCENE_PIGMENT_DESCRIPTION

@@ -22,9 +22,9 @@
 namespace scene {
 
 //  X(kind, keyword, feature switch or nullptr, reader, GLSL colour function), in code order
-#define SCENE_PIGMENTS(X)                                                                       \
-    X(Solid, "solid", nullptr, readSolidPigment, "solidPigmentColor")                           \
-    X(Checker, "checker", "HAS_CHECKER_PIGMENT", readCheckerPigment, "checkerPigmentColor")     \
+#define SCENE_PIGMENTS(X)                                                                          \
+    X(Solid, "solid", nullptr, readSolidPigment, "solidPigmentColor")                              \
+    X(Checker, "checker", "HAS_CHECKER_PIGMENT", readCheckerPigment, "checkerPigmentColor")        \
     X(Texture, "texmap", "HAS_TEXTURE_PIGMENT", readTexturePigment, "texturePigmentColor")
 
 enum class PigmentKind {
@@ -35,23 +35,23 @@ enum class PigmentKind {
 
 struct Pigment {
     PigmentKind kind = PigmentKind::Solid;
-    glm::vec3 color{1.0f};         // solid colour, or the checker's first colour
-    glm::vec3 secondColor{0.0f};   // checker only
-    float size = 1.0f;             // checker cube edge, or world units per texture tile
-    std::string textureName;       // texture only: as written in the file
+    glm::vec3 color{1.0f};              // solid colour, or the checker's first colour
+    glm::vec3 secondColor{0.0f};        // checker only
+    float size = 1.0f;                  // checker cube edge, or world units per texture tile
+    std::string textureName;            // texture only: as written in the file
     std::filesystem::path texturePath;  // texture only: where it was found
-    int line = 0;                  // where the pigment is written, for messages
+    int line = 0;                       // where the pigment is written, for messages
 };
 
 // Reads the numbers after a pigment's keyword into `pigment`; `which` names the pigment in
 // messages, `lookup` finds texture files.
-using PigmentReader = void (*)(TokenCursor& in, const FileLookup& lookup,
-                               const std::string& which, Pigment& pigment);
+using PigmentReader = void (*)(TokenCursor& in, const FileLookup& lookup, const std::string& which,
+                               Pigment& pigment);
 
 struct PigmentDescription {
     PigmentKind kind;
-    int code;                   // its place in the list; the shaders' PIGMENT_<IDENTIFIER>
-    const char* identifier;     // the enumerator's name
+    int code;                // its place in the list; the shaders' PIGMENT_<IDENTIFIER>
+    const char* identifier;  // the enumerator's name
     const char* keyword;
     const char* featureSwitch;  // 1 where the shader has the pigment; nullptr: always there
     PigmentReader read;

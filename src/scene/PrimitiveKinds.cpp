@@ -25,33 +25,43 @@ constexpr int parameterCount()
 
 // The optional members of a description (scene/Primitives.h), detected.
 template <typename P, typename = void>
-struct HasExact : std::false_type {};
+struct HasExact : std::false_type {
+};
 template <typename P>
-struct HasExact<P, std::void_t<decltype(Primitive<P>::exact)>> : std::true_type {};
+struct HasExact<P, std::void_t<decltype(Primitive<P>::exact)>> : std::true_type {
+};
 
 template <typename P, typename = void>
-struct HasExactTerm : std::false_type {};
+struct HasExactTerm : std::false_type {
+};
 template <typename P>
-struct HasExactTerm<P, std::void_t<decltype(Primitive<P>::exactTerm)>> : std::true_type {};
+struct HasExactTerm<P, std::void_t<decltype(Primitive<P>::exactTerm)>> : std::true_type {
+};
 
 template <typename P, typename = void>
-struct IsMetInWorld : std::false_type {};
+struct IsMetInWorld : std::false_type {
+};
 template <typename P>
 struct IsMetInWorld<P, std::void_t<decltype(Primitive<P>::parametersInWorld(
                            std::declval<const P&>(), std::declval<const Transform&>()))>>
-    : std::true_type {};
+    : std::true_type {
+};
 
 template <typename P, typename = void>
-struct HasMetExactly : std::false_type {};
+struct HasMetExactly : std::false_type {
+};
 template <typename P>
 struct HasMetExactly<P, std::void_t<decltype(Primitive<P>::metExactly(std::declval<const P&>()))>>
-    : std::true_type {};
+    : std::true_type {
+};
 
 template <typename P, typename = void>
-struct IsMarchedOnRequest : std::false_type {};
+struct IsMarchedOnRequest : std::false_type {
+};
 template <typename P>
 struct IsMarchedOnRequest<P, std::void_t<decltype(Primitive<P>::marchedOnRequest)>>
-    : std::bool_constant<Primitive<P>::marchedOnRequest> {};
+    : std::bool_constant<Primitive<P>::marchedOnRequest> {
+};
 
 template <typename P>
 std::vector<glm::vec4> exactParametersOf(const Geometry& geometry,

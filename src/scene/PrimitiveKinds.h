@@ -10,17 +10,17 @@
 namespace scene {
 
 struct PrimitiveKind {
-    int code;               // its index in Geometry; the shaders' PRIMITIVE_<KEYWORD>
+    int code;  // its index in Geometry; the shaders' PRIMITIVE_<KEYWORD>
     const char* keyword;
-    const char* distance;   // GLSL, over the parameter slots $0, $1, ...
-    int parameterCount;     // vec4s; a union of terms has one per term
-    bool unionOfTerms;      // the distance is the minimum of `distance` over every vec4
+    const char* distance;  // GLSL, over the parameter slots $0, $1, ...
+    int parameterCount;    // vec4s; a union of terms has one per term
+    bool unionOfTerms;     // the distance is the minimum of `distance` over every vec4
     Geometry (*read)(TokenCursor& in);
 
     // Exact intersection (scene/Primitives.h says what each member means); null `exact`:
     // rays always march it.
     const char* exact;
-    const char* exactSetup;      // unions of terms only
+    const char* exactSetup;  // unions of terms only
     const char* exactTerm;
     const char* metExactlyGlsl;  // null: every shape of the kind is met exactly
     const char* exactLimit;      // the shapes it does not meet, for messages

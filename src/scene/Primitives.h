@@ -23,7 +23,8 @@
 namespace scene {
 
 template <typename... Types>
-struct TypeList {};
+struct TypeList {
+};
 
 // Bounding sphere of one shape; infinite shapes (planes, cones) have none.
 struct ShapeBound {
@@ -82,7 +83,10 @@ struct Primitive<Sphere> {
         sphere.radius = in.positiveNumber("sphere radius");
         return sphere;
     }
-    static ShapeBound bound(const Sphere& sphere) { return finiteBound(sphere.center, sphere.radius); }
+    static ShapeBound bound(const Sphere& sphere)
+    {
+        return finiteBound(sphere.center, sphere.radius);
+    }
     static std::array<glm::vec4, 1> parameters(const Sphere& sphere)
     {
         return {glm::vec4(sphere.center, sphere.radius)};
@@ -163,8 +167,8 @@ struct Primitive<Box> {
         box.halfExtents.y = in.numberAtLeast("box half-extent y", 0.0f);
         box.halfExtents.z = in.numberAtLeast("box half-extent z", 0.0f);
         // One zero extent leaves a rectangle, a surface; two leave a line, which has none.
-        const int zeros = (box.halfExtents.x == 0.0f) + (box.halfExtents.y == 0.0f) +
-                          (box.halfExtents.z == 0.0f);
+        const int zeros =
+            (box.halfExtents.x == 0.0f) + (box.halfExtents.y == 0.0f) + (box.halfExtents.z == 0.0f);
         if (zeros > 1)
             in.failAtMark(first, "box half-extents of which at most one is zero");
         return box;
@@ -274,9 +278,8 @@ struct Primitive<Cylinder> {
     }
     static ShapeBound bound(const Cylinder& cylinder)
     {
-        return finiteBound(cylinder.center,
-                           std::sqrt(cylinder.radius * cylinder.radius +
-                                     cylinder.halfHeight * cylinder.halfHeight));
+        return finiteBound(cylinder.center, std::sqrt(cylinder.radius * cylinder.radius +
+                                                      cylinder.halfHeight * cylinder.halfHeight));
     }
     static std::array<glm::vec4, 2> parameters(const Cylinder& cylinder)
     {
@@ -343,7 +346,8 @@ struct Primitive<RoundedBox> {
         box.halfExtents.z = in.positiveNumber("rounded box half-extent z");
         const std::size_t radiusToken = in.mark();
         box.radius = in.numberAtLeast("rounded box edge radius", 0.0f);
-        const float smallest = glm::min(box.halfExtents.x, glm::min(box.halfExtents.y, box.halfExtents.z));
+        const float smallest =
+            glm::min(box.halfExtents.x, glm::min(box.halfExtents.y, box.halfExtents.z));
         if (box.radius > smallest)
             in.failAtMark(radiusToken, "an edge radius of at most the smallest half-extent, " +
                                            TokenCursor::formatNumber(smallest));

@@ -4,10 +4,9 @@ namespace scene {
 
 bool sameCamera(const Camera& a, const Camera& b)
 {
-    const bool sameLens =
-        a.lens.has_value() == b.lens.has_value() &&
-        (!a.lens || (a.lens->apertureRadius == b.lens->apertureRadius &&
-                     a.lens->focusDistance == b.lens->focusDistance));
+    const bool sameLens = a.lens.has_value() == b.lens.has_value() &&
+                          (!a.lens || (a.lens->apertureRadius == b.lens->apertureRadius &&
+                                       a.lens->focusDistance == b.lens->focusDistance));
     return a.eye == b.eye && a.target == b.target && a.up == b.up &&
            a.verticalFieldOfViewDegrees == b.verticalFieldOfViewDegrees && sameLens;
 }
@@ -16,8 +15,7 @@ CameraFrame cameraFrame(const Camera& camera)
 {
     // In double: target - eye, and its squared length, can overflow a float for points the
     // format accepts (a far target), though the direction is well defined.
-    const glm::dvec3 forward =
-        glm::normalize(glm::dvec3(camera.target) - glm::dvec3(camera.eye));
+    const glm::dvec3 forward = glm::normalize(glm::dvec3(camera.target) - glm::dvec3(camera.eye));
     const glm::dvec3 right = glm::normalize(glm::cross(forward, glm::dvec3(camera.up)));
     CameraFrame frame;
     frame.forward = glm::vec3(forward);

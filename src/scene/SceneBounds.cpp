@@ -104,8 +104,8 @@ void addInfinitePoints(const Shape& shape, const glm::vec3& camera, Box3& box)
                           (camera - shape.transform->translation) / shape.transform->scale;
         for (const glm::vec4& plane : polyhedron->planes) {
             const glm::vec3 normal(plane);
-            const float distance = (glm::dot(normal, localCamera) + plane.w) /
-                                   glm::dot(normal, normal);
+            const float distance =
+                (glm::dot(normal, localCamera) + plane.w) / glm::dot(normal, normal);
             box.add(toWorld(localCamera - distance * normal));
         }
     } else if (const auto* cone = std::get_if<Cone>(&shape.geometry)) {
@@ -114,8 +114,7 @@ void addInfinitePoints(const Shape& shape, const glm::vec3& camera, Box3& box)
         for (const Shape& child : node->children) {
             Shape placed = child;
             if (shape.transform)
-                placed.transform =
-                    compose(*shape.transform, child.transform.value_or(Transform{}));
+                placed.transform = compose(*shape.transform, child.transform.value_or(Transform{}));
             addInfinitePoints(placed, camera, box);
         }
     } else if (const auto* user = std::get_if<UserSdf>(&shape.geometry)) {

@@ -15,8 +15,8 @@ namespace {
 
 [[noreturn]] void failToRead(const fs::path& path, int error)
 {
-    throw std::runtime_error(path.string() + ": cannot read the scene file: " +
-                             std::strerror(error));
+    throw std::runtime_error(path.string() +
+                             ": cannot read the scene file: " + std::strerror(error));
 }
 
 }  // namespace

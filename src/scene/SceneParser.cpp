@@ -1,8 +1,8 @@
 #include "scene/SceneParser.h"
 
 #include "scene/PrimitiveKinds.h"
-#include "scene/SceneFileText.h"
 #include "scene/SceneError.h"
+#include "scene/SceneFileText.h"
 #include "scene/Spelling.h"
 #include "scene/TokenCursor.h"
 #include "scene/Tokenizer.h"
@@ -31,8 +31,8 @@ const std::set<std::string> kSectionKeywords = {"environment"};
 // What a scene file may make the parser hold (docs/SCENE_FORMAT.md, "Limits"): far beyond any
 // scene this renderer can draw, and small enough that no file can exhaust memory or the stack.
 constexpr int kMaxCount = TokenCursor::kMaxCount;  // lights, pigments, finishes, objects, planes
-constexpr int kMaxNestingDepth = 64;              // CSG blocks and transforms, one inside another
-constexpr std::size_t kMaxTokens = 4u << 20;      // words in the file
+constexpr int kMaxNestingDepth = 64;               // CSG blocks and transforms, one inside another
+constexpr std::size_t kMaxTokens = 4u << 20;       // words in the file
 
 // "sphere, polyhedron, ...": every primitive's keyword, for messages.
 std::string primitiveWords()
@@ -144,8 +144,7 @@ private:
 
     void parseEnvironment(Environment& environment)
     {
-        const std::string expected =
-            "an environment: none, sky, a colour 'r g b', or map FILE";
+        const std::string expected = "an environment: none, sky, a colour 'r g b', or map FILE";
         const Token* token = peek();
         if (token == nullptr)
             fail(expected);
@@ -218,8 +217,8 @@ private:
     {
         const int lights = count("number of point lights");
         for (int i = 0; i < lights; ++i) {
-            const std::string which = "point light " + std::to_string(i + 1) + " of " +
-                                      std::to_string(lights);
+            const std::string which =
+                "point light " + std::to_string(i + 1) + " of " + std::to_string(lights);
             PointLight light;
             light.position = vector3(which + " position");
             light.intensity = colour(which + " intensity");
@@ -231,9 +230,9 @@ private:
     {
         const int pigments = count("number of pigments");
         for (int i = 0; i < pigments; ++i) {
-            const std::string which =
-                "pigment " + std::to_string(i) + " (" + std::to_string(i + 1) + " of " +
-                std::to_string(pigments) + ")";
+            const std::string which = "pigment " + std::to_string(i) + " (" +
+                                      std::to_string(i + 1) + " of " + std::to_string(pigments) +
+                                      ")";
             const std::string expected = "a pigment kind for " + which + ": " + pigmentKeywords();
             const Token& word = next(expected);
             const PigmentDescription* kind = findPigmentKind(word.text);
@@ -255,9 +254,8 @@ private:
     {
         const int finishes = count("number of finishes");
         for (int i = 0; i < finishes; ++i) {
-            const std::string which = "finish " + std::to_string(i) + " (" +
-                                      std::to_string(i + 1) + " of " +
-                                      std::to_string(finishes) + ")";
+            const std::string which = "finish " + std::to_string(i) + " (" + std::to_string(i + 1) +
+                                      " of " + std::to_string(finishes) + ")";
             Finish finish;
             // A finish written with its material's keyword (extension); a classic one starts
             // with a number.
@@ -270,16 +268,16 @@ private:
                     continue;
                 }
             }
-            finish.emission = colour(which + " emitted radiance, or a finish keyword: " +
-                                     finishKeywords());
+            finish.emission =
+                colour(which + " emitted radiance, or a finish keyword: " + finishKeywords());
             finish.phongExponent = numberAtLeast(which + " Blinn-Phong exponent", 0.0f);
             finish.reflection = number(which + " kr");
             finish.transmission = number(which + " kt");
             const std::size_t iorToken = mark();
             finish.ior = number(which + " index of refraction");
             if (finish.transmission > 0.0f && !(finish.ior > 0.0f))
-                failAtMark(iorToken, "a positive index of refraction (" + which +
-                                     " is transmissive)");
+                failAtMark(iorToken,
+                           "a positive index of refraction (" + which + " is transmissive)");
             scene.finishes.push_back(finish);
         }
     }
@@ -288,8 +286,8 @@ private:
     {
         const int objects = count("number of objects");
         for (int i = 0; i < objects; ++i) {
-            const std::string which = "object " + std::to_string(i + 1) + " of " +
-                                      std::to_string(objects);
+            const std::string which =
+                "object " + std::to_string(i + 1) + " of " + std::to_string(objects);
             SceneObject object;
             object.line = peek() != nullptr ? peek()->line : 0;
             object.pigment = index("pigment", scene.pigments.size());
@@ -299,7 +297,7 @@ private:
             const bool emissive = scene.finishes[object.finish].isEmissive();
             if (emissive && !std::holds_alternative<Sphere>(object.shape.geometry))
                 failAtMark(typeToken, "a sphere: finish " + std::to_string(object.finish) +
-                                       " emits light, and only spheres may emit");
+                                          " emits light, and only spheres may emit");
             scene.objects.push_back(std::move(object));
         }
     }
@@ -332,9 +330,8 @@ private:
         user.name = word;
         const auto found = lookup_.findUserSdf(word);
         if (!found)
-            failAt(type, "an object type, or a user SDF with a shader file " +
-                             shownToken(word) + ".glsl (looked in " +
-                             joinFolders(lookup_.shaderFolders()) + ")" +
+            failAt(type, "an object type, or a user SDF with a shader file " + shownToken(word) +
+                             ".glsl (looked in " + joinFolders(lookup_.shaderFolders()) + ")" +
                              didYouMean(word, shapeKeywords()));
         user.sourcePath = *found;
         readUserSdfDeclarations(user);
@@ -370,7 +367,8 @@ private:
         if (const CsgOperatorDescription* sharp = findCsgOperator(word, "")) {
             node.op = sharp->op;
         } else {
-            const std::string expected = "a smooth-operator kind: exp (sharpness k) or poly (radius)";
+            const std::string expected =
+                "a smooth-operator kind: exp (sharpness k) or poly (radius)";
             const Token& mode = next(expected);
             const CsgOperatorDescription* smooth = findCsgOperator(word, mode.text);
             if (smooth == nullptr) {
@@ -392,11 +390,10 @@ private:
             node.children.push_back(parseShape(which + ", inside '" + word + "'", depth));
         }
         if (atEnd())
-            fail("'}' closing the '" + word + "' opened on line " +
-                 std::to_string(keyword.line));
+            fail("'}' closing the '" + word + "' opened on line " + std::to_string(keyword.line));
         if (node.children.size() < 2)
-            fail( "at least two shapes inside '" + word + "' (opened on line " +
-                                 std::to_string(keyword.line) + ")");
+            fail("at least two shapes inside '" + word + "' (opened on line " +
+                 std::to_string(keyword.line) + ")");
         skip();
         return node;
     }
@@ -413,8 +410,7 @@ bool isReservedShapeWord(const std::string& word)
            findPrimitiveKind(word) != nullptr;
 }
 
-Scene parseSceneText(const std::string& text, const std::string& fileName,
-                     const FileLookup& lookup)
+Scene parseSceneText(const std::string& text, const std::string& fileName, const FileLookup& lookup)
 {
     std::string_view content = text;
     // An editor's UTF-8 byte-order mark means nothing here; a UTF-16 file cannot be read.

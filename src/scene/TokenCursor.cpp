@@ -120,24 +120,24 @@ int TokenCursor::count(const std::string& what)
     if (end != last || (error != std::errc() && error != std::errc::result_out_of_range))
         failAt(token, "a whole number: " + expected);
     if (error != std::errc() || value < 0 || value > kMaxCount)
-        failAt(token, expected + (value < 0 ? "" : "; a scene holds at most " +
-                                                       std::to_string(kMaxCount)));
+        failAt(token,
+               expected +
+                   (value < 0 ? "" : "; a scene holds at most " + std::to_string(kMaxCount)));
     return static_cast<int>(value);
 }
 
 int TokenCursor::index(const std::string& what, std::size_t size)
 {
-    const std::string expected =
-        size == 0 ? "no " + what + " index: the file defines none"
-                  : "a " + what + " index from 0 to " + std::to_string(size - 1);
+    const std::string expected = size == 0
+                                     ? "no " + what + " index: the file defines none"
+                                     : "a " + what + " index from 0 to " + std::to_string(size - 1);
     const Token* token = peek();
     if (token == nullptr)
         fail(expected);
     int value = 0;
     const char* last = token->text.data() + token->text.size();
     const auto [end, error] = std::from_chars(token->text.data(), last, value);
-    if (error != std::errc() || end != last || value < 0 ||
-        static_cast<std::size_t>(value) >= size)
+    if (error != std::errc() || end != last || value < 0 || static_cast<std::size_t>(value) >= size)
         fail(expected);
     ++position_;
     return value;

@@ -19,7 +19,8 @@ glm::vec3 applyTransform(const Transform& transform, const glm::vec3& local)
 glm::vec4 applyTransformToPlane(const Transform& transform, const glm::vec4& localPlane)
 {
     const glm::vec3 normal = transform.rotation * glm::vec3(localPlane);
-    return glm::vec4(normal, transform.scale * localPlane.w - glm::dot(normal, transform.translation));
+    return glm::vec4(normal,
+                     transform.scale * localPlane.w - glm::dot(normal, transform.translation));
 }
 
 }  // namespace scene

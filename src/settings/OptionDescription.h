@@ -39,9 +39,9 @@ struct Range {
     std::string describe() const;
 };
 
-Range positive();                  // above 0
-Range atLeast(double low);         // low or more
-Range above(double low);           // more than low
+Range positive();           // above 0
+Range atLeast(double low);  // low or more
+Range above(double low);    // more than low
 Range wholeFrom(long long low, long long high);
 Range wholeAtLeast(long long low);
 
@@ -76,20 +76,20 @@ public:
     // A command-line option that takes no value.
     bool isSwitch() const { return !flag.empty() && valueName.empty(); }
 
-    std::string flag;                  // empty: no command-line option
+    std::string flag;  // empty: no command-line option
     std::vector<std::string> aliases;
-    std::string valueName;             // "N"; empty: a switch (sets switchValue)
-    std::string help;                  // "{default}" marks where the default goes
-    Range range;                       // for numbers
+    std::string valueName;  // "N"; empty: a switch (sets switchValue)
+    std::string help;       // "{default}" marks where the default goes
+    Range range;            // for numbers
     std::any switchValue;
     std::function<std::any(const std::string&)> reader;  // null: by the field's type
-    std::string defaultText;           // "" : the field's default; see showDefault
+    std::string defaultText;  // "" : the field's default; see showDefault
     bool showDefault = true;
-    std::string metadataKey;           // empty: not recorded
+    std::string metadataKey;  // empty: not recorded
     std::string metadataLabel;
-    std::string setBy;                 // what sets a setting that has no flag
-    std::string uniformModule;         // empty: no uniform
-    std::string uniformGuard;          // empty: declared wherever the module is
+    std::string setBy;          // what sets a setting that has no flag
+    std::string uniformModule;  // empty: no uniform
+    std::string uniformGuard;   // empty: declared wherever the module is
 };
 
 // An option that takes a value, named `valueName` in --help.

@@ -40,10 +40,7 @@ struct BoundOption {
     bool isRecorded() const { return !description.metadataKey.empty(); }
     bool isUniform() const { return !description.uniformModule.empty(); }
     // "--hit-tolerance", or what sets it where no option does.
-    const std::string& setBy() const
-    {
-        return isOption() ? description.flag : description.setBy;
-    }
+    const std::string& setBy() const { return isOption() ? description.flag : description.setBy; }
 };
 
 // Binds `description` to the field `access(owner)` returns (a generic lambda, so that it
@@ -81,8 +78,8 @@ BoundOption<Owner> bindOption(std::string field, Access access, OptionDescriptio
         };
     } else if (!description.flag.empty()) {
         if constexpr (isParseable<T>())
-            row.apply = [access, range = description.range, flag = description.flag](
-                            Owner& owner, const std::string& text) {
+            row.apply = [access, range = description.range,
+                         flag = description.flag](Owner& owner, const std::string& text) {
                 access(owner) = parseValue<T>(text, range, flag);
             };
         else

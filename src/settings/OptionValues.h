@@ -63,14 +63,18 @@ long long parseWholeNumber(const std::string& text, const Range& range, const st
 double parseDecimalNumber(const std::string& text, const Range& range, const std::string& flag);
 
 template <typename T, typename = void>
-struct IsChoice : std::false_type {};
+struct IsChoice : std::false_type {
+};
 template <typename T>
-struct IsChoice<T, std::void_t<decltype(Choices<T>::values)>> : std::true_type {};
+struct IsChoice<T, std::void_t<decltype(Choices<T>::values)>> : std::true_type {
+};
 
 template <typename T>
-struct IsOptional : std::false_type {};
+struct IsOptional : std::false_type {
+};
 template <typename T>
-struct IsOptional<std::optional<T>> : std::true_type {};
+struct IsOptional<std::optional<T>> : std::true_type {
+};
 
 // "'sobol' or 'independent'"
 template <typename Enum>
@@ -171,7 +175,8 @@ bool readValue(const std::string& text, T& value)
         return false;
     } else {
         long long whole = 0;
-        if (!readInteger(text, whole) || whole < static_cast<long long>(std::numeric_limits<T>::min()))
+        if (!readInteger(text, whole) ||
+            whole < static_cast<long long>(std::numeric_limits<T>::min()))
             return false;
         if (static_cast<unsigned long long>(whole) > std::numeric_limits<T>::max())
             return false;
@@ -194,7 +199,8 @@ template <typename T>
 UniformValue uniformValue(const T& value)
 {
     if constexpr (std::is_same_v<T, std::uint64_t>)
-        return glm::uvec2(static_cast<std::uint32_t>(value), static_cast<std::uint32_t>(value >> 32));
+        return glm::uvec2(static_cast<std::uint32_t>(value),
+                          static_cast<std::uint32_t>(value >> 32));
     else if constexpr (IsChoice<T>::value)
         return choiceCode(value);
     else

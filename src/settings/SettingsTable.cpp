@@ -10,8 +10,9 @@ const std::vector<SettingRow>& settingRows()
     static const std::vector<SettingRow> rows = {
 #define SECTION(title)
 #define OPTION(field, ...)
-#define SETTING(Type, field, defaultValue, ...) \
-    bindOption<RenderSettings>(#field, [](auto& s) -> auto& { return s.field; }, __VA_ARGS__),
+#define SETTING(Type, field, defaultValue, ...)                                                    \
+    bindOption<RenderSettings>(                                                                    \
+        #field, [](auto& s) -> auto& { return s.field; }, __VA_ARGS__),
 #include "settings/Options.def"
 #undef SECTION
 #undef OPTION

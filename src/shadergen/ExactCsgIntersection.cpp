@@ -89,43 +89,43 @@ std::optional<ExactCsgCode> exactCsgIntersection(const Shape& shape, std::size_t
     const std::string leafCrossing = "exactCsgLeafCrossing" + id;
     const std::string walk = "exactCsgCrossing" + id;
     std::ostringstream functions;
-    functions << compiler.functions()
-              << "// Object " << id << ": the first crossing of any of its " << leaves.size()
-              << " leaves' surfaces in (tMin, hit.t).\n"
-              << "void " << leafCrossing
-              << "(vec3 origin, vec3 direction, float tMin, inout ExactHit hit)\n{\n"
-              << leafStatements.str() << "}\n\n"
-              << "// Object " << id
-              << ": the first crossing of its surface in (tMin, hit.t), by the crossing walk\n"
-                 "// (shadergen/ExactCsgIntersection.h) over at most "
-              << crossings << " leaf crossings.\n"
-              << "bool " << walk
-              << "(vec3 origin, vec3 direction, float tMin, int object, inout ExactHit hit)\n{\n"
-              << "    ExactHit crossing = ExactHit(FLOAT_MAX, -1, vec3(0.0));\n"
-              << "    " << leafCrossing << "(origin, direction, tMin, crossing);\n"
-              << "    if (crossing.object < 0 || !(crossing.t < hit.t))\n"
-              << "        return false;\n"
-              << "    bool before = " << distance
-              << "(origin + (0.5 * (tMin + crossing.t)) * direction) < 0.0;\n"
-              << "    for (int i = 0; i < " << crossings << " && loopIterationAllowed(); ++i) {\n"
-              << "        ExactHit next = ExactHit(FLOAT_MAX, -1, vec3(0.0));\n"
-              << "        " << leafCrossing
-              << "(origin, direction, exactCsgNextStart(crossing.t), next);\n"
-              << "        float beyond = next.object >= 0 ? 0.5 * (crossing.t + next.t)\n"
-              << "                                        : exactCsgBeyondEveryCrossing(crossing.t);\n"
-              << "        bool after = " << distance << "(origin + beyond * direction) < 0.0;\n"
-              << "        if (after != before) {\n"
-              << "            hit = ExactHit(crossing.t, object,\n"
-              << "                           exactCsgOutward(crossing.normal, direction, after));\n"
-              << "            return true;\n"
-              << "        }\n"
-              << "        if (next.object < 0 || !(next.t < hit.t))\n"
-              << "            return false;\n"
-              << "        crossing = next;\n"
-              << "        before = after;\n"
-              << "    }\n"
-              << "    return false;\n"
-              << "}\n\n";
+    functions
+        << compiler.functions() << "// Object " << id << ": the first crossing of any of its "
+        << leaves.size() << " leaves' surfaces in (tMin, hit.t).\n"
+        << "void " << leafCrossing
+        << "(vec3 origin, vec3 direction, float tMin, inout ExactHit hit)\n{\n"
+        << leafStatements.str() << "}\n\n"
+        << "// Object " << id
+        << ": the first crossing of its surface in (tMin, hit.t), by the crossing walk\n"
+           "// (shadergen/ExactCsgIntersection.h) over at most "
+        << crossings << " leaf crossings.\n"
+        << "bool " << walk
+        << "(vec3 origin, vec3 direction, float tMin, int object, inout ExactHit hit)\n{\n"
+        << "    ExactHit crossing = ExactHit(FLOAT_MAX, -1, vec3(0.0));\n"
+        << "    " << leafCrossing << "(origin, direction, tMin, crossing);\n"
+        << "    if (crossing.object < 0 || !(crossing.t < hit.t))\n"
+        << "        return false;\n"
+        << "    bool before = " << distance
+        << "(origin + (0.5 * (tMin + crossing.t)) * direction) < 0.0;\n"
+        << "    for (int i = 0; i < " << crossings << " && loopIterationAllowed(); ++i) {\n"
+        << "        ExactHit next = ExactHit(FLOAT_MAX, -1, vec3(0.0));\n"
+        << "        " << leafCrossing
+        << "(origin, direction, exactCsgNextStart(crossing.t), next);\n"
+        << "        float beyond = next.object >= 0 ? 0.5 * (crossing.t + next.t)\n"
+        << "                                        : exactCsgBeyondEveryCrossing(crossing.t);\n"
+        << "        bool after = " << distance << "(origin + beyond * direction) < 0.0;\n"
+        << "        if (after != before) {\n"
+        << "            hit = ExactHit(crossing.t, object,\n"
+        << "                           exactCsgOutward(crossing.normal, direction, after));\n"
+        << "            return true;\n"
+        << "        }\n"
+        << "        if (next.object < 0 || !(next.t < hit.t))\n"
+        << "            return false;\n"
+        << "        crossing = next;\n"
+        << "        before = after;\n"
+        << "    }\n"
+        << "    return false;\n"
+        << "}\n\n";
     return ExactCsgCode{functions.str(),
                         "    " + walk + "(origin, direction, tMin, " + id + ", hit);\n"};
 }

@@ -10,8 +10,8 @@
 // changes: the point-membership classification of ray casting for solids (Roth, "Ray casting
 // for modeling solids", 1982), with each leaf's exact intersection in place of its span list.
 // The normal is the crossed leaf's, turned to point out of the solid.
-#include "shadergen/ExactSceneIntersection.h"
 #include "scene/Scene.h"
+#include "shadergen/ExactSceneIntersection.h"
 
 #include <glm/glm.hpp>
 

@@ -63,7 +63,8 @@ std::string inFrame(const std::optional<Transform>& transform, const MeetInFrame
 {
     std::ostringstream out;
     if (!transform) {
-        out << "    {\n" << declarations << "        vec3 o = origin;\n        vec3 d = direction;\n"
+        out << "    {\n"
+            << declarations << "        vec3 o = origin;\n        vec3 d = direction;\n"
             << "        " << meet("tMin", "hit") << ";\n    }\n";
         return out.str();
     }
@@ -99,31 +100,28 @@ std::optional<std::string> exactIntersectionStatements(const Shape& shape, std::
         // transformed; the others in their own frame.
         const std::vector<glm::vec4> values = kind->exactParameters(geometry, transform);
         const int first = allocate(values);
-        const std::string call =
-            overSlots(kind->exact, [&](int k) { return slot(first + k); });
+        const std::string call = overSlots(kind->exact, [&](int k) { return slot(first + k); });
         if (!kind->unionOfTerms)
             return inFrame(kind->exactInWorld ? std::nullopt : transform, exactCall(call, id),
                            allocate);
         std::string terms;
         for (int term = 0; term < static_cast<int>(values.size()); ++term)
-            terms += overSlots(kind->exactTerm, [&](int) { return slot(first + term); }) +
-                     "\n        ";
+            terms +=
+                overSlots(kind->exactTerm, [&](int) { return slot(first + term); }) + "\n        ";
         const MeetInFrame meet = [&](const std::string& tMin, const std::string& hit) {
             return terms + exactCall(call, id)(tMin, hit);
         };
         return inFrame(std::nullopt, meet, allocate,
                        "        " + std::string(kind->exactSetup) + "\n");
     }
-    if (const auto* user = std::get_if<UserSdf>(&geometry);
-               user && user->intersectFunction) {
+    if (const auto* user = std::get_if<UserSdf>(&geometry); user && user->intersectFunction) {
         // The file's own intersection (// @intersect): bool F(origin, direction, x, tMin,
         // tMax, out t, out normal), in the frame its distance function is evaluated in.
         const int s = allocate({glm::vec4(user->position, 0.0f)});
         const std::string function = *user->intersectFunction;
         const MeetInFrame meet = [&](const std::string& tMin, const std::string& hit) {
-            return "exactUserCrossing(" + function + "(o, d, " + slot(s) + ".xyz, " + tMin +
-                   ", " + hit + ".t, crossing, outward), crossing, outward, " + id + ", " + hit +
-                   ")";
+            return "exactUserCrossing(" + function + "(o, d, " + slot(s) + ".xyz, " + tMin + ", " +
+                   hit + ".t, crossing, outward), crossing, outward, " + id + ", " + hit + ")";
         };
         return inFrame(transform, meet, allocate,
                        "        float crossing;\n        vec3 outward;\n");

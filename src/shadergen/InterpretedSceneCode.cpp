@@ -1,9 +1,9 @@
 #include "shadergen/InterpretedSceneCode.h"
 
-#include "shadergen/SceneShaderPlan.h"
-#include "shadergen/ShaderCodes.h"
 #include "scene/PrimitiveKinds.h"
 #include "scene/SceneBounds.h"
+#include "shadergen/SceneShaderPlan.h"
+#include "shadergen/ShaderCodes.h"
 
 #include <algorithm>
 #include <map>
@@ -25,9 +25,10 @@ std::string primitiveInterpreter(const std::set<int>* usedKinds)
     for (const PrimitiveKind& kind : primitiveKinds())
         if (usedKinds == nullptr || usedKinds->count(kind.code) != 0)
             kinds.push_back(&kind);
-    std::stable_sort(kinds.begin(), kinds.end(), [](const PrimitiveKind* a, const PrimitiveKind* b) {
-        return a->parameterCount < b->parameterCount;
-    });
+    std::stable_sort(kinds.begin(), kinds.end(),
+                     [](const PrimitiveKind* a, const PrimitiveKind* b) {
+                         return a->parameterCount < b->parameterCount;
+                     });
     std::ostringstream out;
     out << "// Primitive `kind` with its parameters from uShapeParameters[first]; `extra` counts a\n"
            "// union's terms (a polyhedron's planes) or names the user SDF (scene/Primitives.h).\n"
@@ -67,11 +68,14 @@ std::string exactPrimitiveInterpreter(const std::set<int>* usedKinds)
     for (const PrimitiveKind& kind : primitiveKinds())
         if (kind.exact != nullptr && (usedKinds == nullptr || usedKinds->count(kind.code) != 0))
             kinds.push_back(&kind);
-    std::stable_sort(kinds.begin(), kinds.end(), [](const PrimitiveKind* a, const PrimitiveKind* b) {
-        return a->parameterCount < b->parameterCount;
-    });
-    auto slot = [](int k) { return k == 0 ? "SHAPE_PARAMETER(first)"
-                                          : "SHAPE_PARAMETER(first + " + std::to_string(k) + ")"; };
+    std::stable_sort(kinds.begin(), kinds.end(),
+                     [](const PrimitiveKind* a, const PrimitiveKind* b) {
+                         return a->parameterCount < b->parameterCount;
+                     });
+    auto slot = [](int k) {
+        return k == 0 ? "SHAPE_PARAMETER(first)"
+                      : "SHAPE_PARAMETER(first + " + std::to_string(k) + ")";
+    };
     std::ostringstream out;
     out << "// Whether rays meet primitive `kind`, its parameters from SHAPE_PARAMETER(first), by "
            "exact\n// intersection (scene/Primitives.h).\n"
@@ -127,8 +131,8 @@ std::string csgInterpreter()
            "float combine(int op, float a, float b, float parameter)\n{\n";
     for (std::size_t i = 0; i < operators.size(); ++i) {
         const CsgOperatorDescription& op = operators[i];
-        const std::string call = std::string(op.function) + "(a, b" +
-                                 (op.hasParameter() ? ", parameter" : "") + ")";
+        const std::string call =
+            std::string(op.function) + "(a, b" + (op.hasParameter() ? ", parameter" : "") + ")";
         if (i + 1 < operators.size())
             out << "    if (op == " << codeName(op) << ")\n        return " << call << ";\n";
         else
@@ -165,8 +169,7 @@ void collectKinds(const Shape& shape, std::set<int>& kinds)
 
 }  // namespace
 
-InterpretedScene interpretedScene(const Scene& scene, ShapeCompiler& compiler,
-                                  bool onlyKindsUsed)
+InterpretedScene interpretedScene(const Scene& scene, ShapeCompiler& compiler, bool onlyKindsUsed)
 {
     std::set<int> usedKinds;
     for (const SceneObject& object : scene.objects)

@@ -2,8 +2,8 @@
 // The general shader's scene (`--no-specialize`): every object's shape as a program of
 // instructions, run by shape_interpreter.glsl, and the generated switches that interpreter
 // calls: over the primitive kinds, the CSG operators and the scene's user SDFs.
-#include "shadergen/ShapeCompiler.h"
 #include "scene/Scene.h"
+#include "shadergen/ShapeCompiler.h"
 
 #include <glm/glm.hpp>
 

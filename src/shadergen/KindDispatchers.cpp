@@ -28,8 +28,8 @@ void guardedCase(std::ostringstream& out, const char* featureSwitch, const std::
 // one), or tested, with `none` the answer for the materials not dispatched (zero for the
 // deltas' evaluation and density).
 void materialDispatcher(std::ostringstream& out, const std::string& signature,
-                        const std::string& suffix, const std::string& arguments,
-                        bool spreadOnly, const std::string& none)
+                        const std::string& suffix, const std::string& arguments, bool spreadOnly,
+                        const std::string& none)
 {
     const std::vector<MaterialDescription>& materials = materialDescriptions();
     out << signature << "\n{\n";
@@ -68,8 +68,8 @@ std::string materialDispatchers()
     materialDispatcher(out, "vec3 bsdfEvaluate(Surface s, vec3 wo, vec3 wi)", "Evaluate",
                        "s, wo, wi", true, "vec3(0.0)");
     out << "// The density of bsdfSample's direction wi, for the materials that are not deltas.\n";
-    materialDispatcher(out, "float bsdfPdf(Surface s, vec3 wo, vec3 wi)", "Pdf", "s, wo, wi",
-                       true, "0.0");
+    materialDispatcher(out, "float bsdfPdf(Surface s, vec3 wo, vec3 wi)", "Pdf", "s, wo, wi", true,
+                       "0.0");
     out << "// `uLobe` chooses between lobes (or reflection and refraction), `uDirection` the\n"
            "// direction within one: both uniform on [0, 1), from the sampler.\n";
     materialDispatcher(out,

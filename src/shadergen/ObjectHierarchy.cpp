@@ -102,8 +102,8 @@ int chooseSplit(Build& build, int begin, int end, const Box& bounds)
         return count <= kMostObjectsPerLeaf ? -1 : begin + count / 2;
     const float low = centres.lower[bestAxis];
     const float scale = kSahBins / (centres.upper[bestAxis] - low);
-    const auto middle = std::partition(
-        build.order.begin() + begin, build.order.begin() + end, [&](int object) {
+    const auto middle =
+        std::partition(build.order.begin() + begin, build.order.begin() + end, [&](int object) {
             const float c = centreOf(*build.objects[object].bounds)[bestAxis];
             return std::min(kSahBins - 1, static_cast<int>((c - low) * scale)) <= bestBin;
         });
@@ -130,7 +130,7 @@ ObjectHierarchy buildObjectHierarchy(const std::vector<HierarchyObject>& objects
     // first child is pushed last, so that it is made right after its parent.
     struct Task {
         int begin, end;
-        int parent;       // -1 for the root
+        int parent;  // -1 for the root
         bool secondChild;
     };
     std::vector<Task> tasks{{0, static_cast<int>(order.size()), -1, false}};

@@ -32,9 +32,9 @@ struct Box {
 // second child is the first node after the first child's subtree.
 struct HierarchyNode {
     Box bounds;
-    int skip = -1;      // the node after this one's subtree in depth-first order; -1: the end
-    int first = 0;      // a leaf's objects: ObjectHierarchy::leafObjects[first, first + count)
-    int count = 0;      // 0: an inner node
+    int skip = -1;  // the node after this one's subtree in depth-first order; -1: the end
+    int first = 0;  // a leaf's objects: ObjectHierarchy::leafObjects[first, first + count)
+    int count = 0;  // 0: an inner node
     bool holdsMarched = false;  // an object below it is marched (not met exactly)
 };
 

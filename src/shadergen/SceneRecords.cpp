@@ -8,11 +8,17 @@ namespace shadergen {
 const RecordLayout<ObjectRecord>& objectRecordLayout()
 {
     static const RecordLayout<ObjectRecord> layout = {
-        "uObjects", "object", "OBJECT_ARRAY_SIZE", "OBJECT_RECORD", 1, true,
+        "uObjects",
+        "object",
+        "OBJECT_ARRAY_SIZE",
+        "OBJECT_RECORD",
+        1,
+        true,
         {
             {&ObjectRecord::pigment, 0, "x", "objectPigment", ""},
             {&ObjectRecord::finish, 0, "y", "objectFinish", ""},
-            {&ObjectRecord::sphereLight, 0, "z", "objectSphereLight", "the sphere light it is, or -1"},
+            {&ObjectRecord::sphereLight, 0, "z", "objectSphereLight",
+             "the sphere light it is, or -1"},
             {&ObjectRecord::shapeProgramStart, 0, "w", "objectShapeProgramStart",
              "the start of its shape program (general shader only)"},
         },
@@ -24,7 +30,12 @@ const RecordLayout<ObjectRecord>& objectRecordLayout()
 const RecordLayout<PigmentRecord>& pigmentRecordLayout()
 {
     static const RecordLayout<PigmentRecord> layout = {
-        "uPigments", "pigment", "PIGMENT_ARRAY_SIZE", "PIGMENT_RECORD", 3, false,
+        "uPigments",
+        "pigment",
+        "PIGMENT_ARRAY_SIZE",
+        "PIGMENT_RECORD",
+        3,
+        false,
         {
             {&PigmentRecord::kind, 0, "x", "pigmentKind", ""},
             {&PigmentRecord::size, 0, "y", "pigmentSize",
@@ -39,7 +50,12 @@ const RecordLayout<PigmentRecord>& pigmentRecordLayout()
 const RecordLayout<FinishRecord>& finishRecordLayout()
 {
     static const RecordLayout<FinishRecord> layout = {
-        "uFinishes", "finish", "FINISH_ARRAY_SIZE", "FINISH_RECORD", 2, false,
+        "uFinishes",
+        "finish",
+        "FINISH_ARRAY_SIZE",
+        "FINISH_RECORD",
+        2,
+        false,
         {
             {&FinishRecord::emission, 0, "rgb", "finishEmission", "emitted radiance"},
             {&FinishRecord::phongExponent, 0, "w", "finishPhongExponent", ""},
@@ -53,7 +69,12 @@ const RecordLayout<FinishRecord>& finishRecordLayout()
 const RecordLayout<ConductorRecord>& conductorRecordLayout()
 {
     static const RecordLayout<ConductorRecord> layout = {
-        "uFinishConductors", "finish", "FINISH_ARRAY_SIZE", "CONDUCTOR_RECORD", 2, false,
+        "uFinishConductors",
+        "finish",
+        "FINISH_ARRAY_SIZE",
+        "CONDUCTOR_RECORD",
+        2,
+        false,
         {
             {&ConductorRecord::eta, 0, "rgb", "finishConductorEta", ""},
             {&ConductorRecord::hasComplexIor, 0, "w", "finishHasComplexIor",
@@ -67,7 +88,12 @@ const RecordLayout<ConductorRecord>& conductorRecordLayout()
 const RecordLayout<LightRecord>& lightRecordLayout()
 {
     static const RecordLayout<LightRecord> layout = {
-        "uLights", "light", "LIGHT_ARRAY_SIZE", "LIGHT_RECORD", 3, false,
+        "uLights",
+        "light",
+        "LIGHT_ARRAY_SIZE",
+        "LIGHT_RECORD",
+        3,
+        false,
         {
             {&LightRecord::position, 0, "xyz", "lightPosition", "position or centre"},
             {&LightRecord::radius, 0, "w", "lightRadius", ""},
@@ -87,10 +113,18 @@ namespace {
 int componentIndex(char letter)
 {
     switch (letter) {
-    case 'x': case 'r': return 0;
-    case 'y': case 'g': return 1;
-    case 'z': case 'b': return 2;
-    case 'w': case 'a': return 3;
+    case 'x':
+    case 'r':
+        return 0;
+    case 'y':
+    case 'g':
+        return 1;
+    case 'z':
+    case 'b':
+        return 2;
+    case 'w':
+    case 'a':
+        return 3;
     }
     throw std::logic_error(std::string("a record component is x, y, z or w, not ") + letter);
 }
@@ -118,8 +152,8 @@ void pack(const RecordLayout<Record>& layout, const Record& record, std::vector<
     for (const RecordField<Record>& field : layout.fields)
         std::visit(
             [&](auto member) {
-                writeComponents(out[first + static_cast<std::size_t>(field.part)],
-                                field.components, record.*member);
+                writeComponents(out[first + static_cast<std::size_t>(field.part)], field.components,
+                                record.*member);
             },
             field.member);
 }
@@ -128,11 +162,16 @@ template <typename Record>
 const char* glslTypeOf(const RecordMember<Record>& member)
 {
     switch (member.index()) {
-    case 0: return "float";
-    case 1: return "int";
-    case 2: return "uint";
-    case 3: return "vec3";
-    default: return "bool";
+    case 0:
+        return "float";
+    case 1:
+        return "int";
+    case 2:
+        return "uint";
+    case 3:
+        return "vec3";
+    default:
+        return "bool";
     }
 }
 
@@ -149,8 +188,8 @@ RecordGlsl glslOf(const RecordLayout<Record>& layout)
     text.guard = layout.guard ? layout.guard : "";
     text.bufferSampler = layout.bufferSampler ? layout.bufferSampler : "";
     for (const RecordField<Record>& field : layout.fields)
-        text.fields.push_back(
-            {glslTypeOf(field.member), field.accessor, field.part, field.components, field.comment});
+        text.fields.push_back({glslTypeOf(field.member), field.accessor, field.part,
+                               field.components, field.comment});
     return text;
 }
 

@@ -21,8 +21,8 @@ namespace shadergen {
 struct ObjectRecord {
     int pigment = 0;
     int finish = 0;
-    int sphereLight = -1;        // the sphere light it is, or -1
-    int shapeProgramStart = 0;   // the start of its shape program (general shader only)
+    int sphereLight = -1;       // the sphere light it is, or -1
+    int shapeProgramStart = 0;  // the start of its shape program (general shader only)
 };
 
 // Per pigment.
@@ -60,15 +60,14 @@ struct LightRecord {
     glm::vec3 emission{0.0f};  // a point light's intensity, a sphere's radiance
     float selectionProbability = 0.0f;
     float cumulativeProbability = 0.0f;
-    int object = -1;           // the object that is the light, or -1
+    int object = -1;               // the object that is the light, or -1
     std::uint32_t cullingBit = 0;  // that object's culling bit, or 0
-    int kind = 0;              // a LIGHT_* code (scene/Lights.h)
+    int kind = 0;                  // a LIGHT_* code (scene/Lights.h)
 };
 
 template <typename Record>
-using RecordMember =
-    std::variant<float Record::*, int Record::*, std::uint32_t Record::*, glm::vec3 Record::*,
-                 bool Record::*>;
+using RecordMember = std::variant<float Record::*, int Record::*, std::uint32_t Record::*,
+                                  glm::vec3 Record::*, bool Record::*>;
 
 template <typename Record>
 struct RecordField {
@@ -116,8 +115,8 @@ struct RecordGlsl {
     std::string countDefine;
     std::string macro;
     int parts = 1;
-    std::string element;  // "vec4" or "ivec4"
-    std::string guard;    // empty: none
+    std::string element;        // "vec4" or "ivec4"
+    std::string guard;          // empty: none
     std::string bufferSampler;  // empty: none
     struct Field {
         std::string glslType;

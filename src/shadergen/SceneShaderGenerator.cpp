@@ -1,11 +1,11 @@
 #include "shadergen/SceneShaderGenerator.h"
 
+#include "scene/PrimitiveKinds.h"
+#include "scene/SceneBounds.h"
 #include "shadergen/ExactSceneIntersection.h"
 #include "shadergen/InterpretedSceneCode.h"
 #include "shadergen/ShaderCodes.h"
 #include "shadergen/SpecializedSceneCode.h"
-#include "scene/PrimitiveKinds.h"
-#include "scene/SceneBounds.h"
 
 #include <algorithm>
 #include <sstream>
@@ -104,8 +104,8 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
     code.exactGeometry = build.exactGeometry;
     code.profileCounters = build.profileCounters;
     const bool specialized = specializesShapes(variant);
-    code.features = specializesFeatures(variant) ? analyseFeatures(scene)
-                                                 : SceneFeatures::everything(scene);
+    code.features =
+        specializesFeatures(variant) ? analyseFeatures(scene) : SceneFeatures::everything(scene);
     if (!specialized)
         // The interpreter reads transforms whether or not this scene has any.
         code.features.transforms = true;
@@ -135,10 +135,9 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
         for (const SphereLight& light : sphereLights(scene)) {
             const auto object = static_cast<std::size_t>(light.object);
             sphereLight[object] = true;
-            const bool enterable =
-                scene.finishes[scene.objects[object].finish].material() ==
-                    MaterialKind::Dielectric ||
-                glm::length(scene.camera.eye - light.center) < light.radius;
+            const bool enterable = scene.finishes[scene.objects[object].finish].material() ==
+                                       MaterialKind::Dielectric ||
+                                   glm::length(scene.camera.eye - light.center) < light.radius;
             neverMarched[object] = object < static_cast<std::size_t>(kCullingBits) && !enterable;
         }
         code.marchesAnything = false;
@@ -217,8 +216,7 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
     // The generated shape code reads the shape parameters at constant indices: they are read
     // once per pixel, before any branch (scene_data.glsl). The interpreter's indices vary.
     define(out, "SHAPE_PARAMETERS_READ_ONCE",
-           specializesShapes(variant) &&
-                   code.shapeParameters.size() <= kMostShapeParametersReadOnce
+           specializesShapes(variant) && code.shapeParameters.size() <= kMostShapeParametersReadOnce
                ? 1
                : 0);
     out << shaderCodeDefines();

@@ -1,8 +1,8 @@
 #pragma once
-#include "shadergen/SceneShaderPlan.h"
 #include "scene/Scene.h"
 #include "scene/SceneFeatures.h"
 #include "settings/RenderSettings.h"
+#include "shadergen/SceneShaderPlan.h"
 
 #include <glm/glm.hpp>
 
@@ -15,7 +15,6 @@
 namespace shadergen {
 
 using settings::ShaderVariant;
-
 
 bool specializesFeatures(ShaderVariant variant);
 bool specializesShapes(ShaderVariant variant);

@@ -1,8 +1,8 @@
 #include "shadergen/SceneShaderPlan.h"
 
-#include "shadergen/ExactSceneIntersection.h"
 #include "scene/PrimitiveKinds.h"
 #include "scene/SceneBounds.h"
+#include "shadergen/ExactSceneIntersection.h"
 
 #include <map>
 
@@ -41,9 +41,9 @@ ScenePlan planScene(const Scene& scene, ShapeCompiler& compiler, bool marchBoxes
     // which need a way in (a dielectric finish) or a camera inside it.
     plan.marchesAnything = false;
     for (const SphereLight& light : sphereLights(scene)) {
-        const bool enterable =
-            scene.finishes[scene.objects[light.object].finish].material() == MaterialKind::Dielectric ||
-            glm::length(scene.camera.eye - light.center) < light.radius;
+        const bool enterable = scene.finishes[scene.objects[light.object].finish].material() ==
+                                   MaterialKind::Dielectric ||
+                               glm::length(scene.camera.eye - light.center) < light.radius;
         if (enterable && lightBits.count(static_cast<std::size_t>(light.object)) != 0)
             ++plan.marchedSurfaceCount;
         if (enterable || lightBits.count(static_cast<std::size_t>(light.object)) == 0)

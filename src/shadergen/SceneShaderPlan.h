@@ -4,8 +4,8 @@
 // whether rays meet it exactly instead of marching it, the bounding sphere it is skipped
 // by, and the piece of the ray's culling mask that stands for it, each with the parameter
 // slots it reads. Tests assert on the plan rather than on the GLSL text.
-#include "shadergen/ShapeCompiler.h"
 #include "scene/Scene.h"
+#include "shadergen/ShapeCompiler.h"
 
 #include <cstdint>
 #include <optional>

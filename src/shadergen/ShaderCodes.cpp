@@ -27,7 +27,8 @@ std::string shaderCodeDefines()
 {
     std::ostringstream out;
     for (std::size_t opcode = 0; opcode < std::size(kOpcodeIdentifiers); ++opcode)
-        define(out, scene::codeName("OPCODE_", kOpcodeIdentifiers[opcode]), static_cast<int>(opcode));
+        define(out, scene::codeName("OPCODE_", kOpcodeIdentifiers[opcode]),
+               static_cast<int>(opcode));
     for (const scene::PrimitiveKind& kind : scene::primitiveKinds())
         define(out, scene::primitiveCodeName(kind), kind.code);
     define(out, "PRIMITIVE_USER", scene::userSdfCode());

@@ -47,9 +47,8 @@ void ShaderSource::add(std::string name, std::string text)
 {
     if (!text.empty() && text.back() != '\n')
         text += '\n';
-    firstLines_.push_back(texts_.empty()
-                              ? 1
-                              : nextFirstLine(firstLines_.back(), lineCount(texts_.back())));
+    firstLines_.push_back(
+        texts_.empty() ? 1 : nextFirstLine(firstLines_.back(), lineCount(texts_.back())));
     names_.push_back(std::move(name));
     texts_.push_back(std::move(text));
 }

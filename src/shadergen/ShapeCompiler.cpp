@@ -1,7 +1,7 @@
 #include "shadergen/ShapeCompiler.h"
 
-#include "shadergen/ShaderCodes.h"
 #include "scene/PrimitiveKinds.h"
+#include "shadergen/ShaderCodes.h"
 
 #include <algorithm>
 #include <utility>
@@ -55,7 +55,8 @@ void ShapeCompiler::writeFunction(const std::string& name, const std::string& wh
                                   const std::string& body)
 {
     functions_ << "// " << objectLabel_ << ": " << what << "\n"
-               << "float " << name << "(vec3 p)\n{\n" << body << "}\n\n";
+               << "float " << name << "(vec3 p)\n{\n"
+               << body << "}\n\n";
 }
 
 // A function is named before its operands' functions are emitted, and written after them.

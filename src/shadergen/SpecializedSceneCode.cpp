@@ -93,8 +93,8 @@ std::string specializedSceneFunctions(const ScenePlan& plan, const std::string& 
                     << "; }\n";
             else
                 out << "    if (" << bit << ") {\n        candidate = " << call(*object)
-                    << ";\n        if (candidate < d) { d = candidate; nearest = "
-                    << object->object << "; }\n    }\n";
+                    << ";\n        if (candidate < d) { d = candidate; nearest = " << object->object
+                    << "; }\n    }\n";
         }
         for (const ObjectPlan* object : bounded)
             out << "    if (" << boundedCondition(*object, culled) << ") {\n"

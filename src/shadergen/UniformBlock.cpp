@@ -1,7 +1,7 @@
 #include "shadergen/UniformBlock.h"
 
-#include "shadergen/SceneRecords.h"
 #include "settings/SettingsTable.h"
+#include "shadergen/SceneRecords.h"
 
 #include <algorithm>
 #include <sstream>
@@ -15,8 +15,7 @@ std::vector<UniformDeclaration> settingUniformDeclarations()
         if (row.isUniform())
             declarations.push_back({row.glslType, settings::uniformName(row.field),
                                     settings::perPixelCopyName(row.field),
-                                    row.description.uniformModule,
-                                    row.description.uniformGuard});
+                                    row.description.uniformModule, row.description.uniformGuard});
     return declarations;
 }
 
@@ -81,8 +80,7 @@ void readRecordsOnce(std::ostringstream& out, const RecordGlsl& record, bool inB
         out << "    " << copyOf(record.uniform) << "[0] = " << record.uniform << "[0];\n";
     else
         out << "    for (int part = 0; part < " << record.parts << "; ++part)\n"
-            << "        " << copyOf(record.uniform) << "[part] = " << record.uniform
-            << "[part];\n";
+            << "        " << copyOf(record.uniform) << "[part] = " << record.uniform << "[part];\n";
     out << "#endif\n";
 }
 
@@ -95,12 +93,11 @@ void writeAccessors(std::ostringstream& out, const RecordGlsl& record)
         const std::string slot = record.macro + "(" + record.indexName + ", " +
                                  std::to_string(field.part) + ")." + field.components;
         // A float array holds integers as floats, and a flag as 1 or 0.
-        const bool converted = record.element == "vec4" &&
-                               (field.glslType == "int" || field.glslType == "uint" ||
-                                field.glslType == "bool");
+        const bool converted =
+            record.element == "vec4" &&
+            (field.glslType == "int" || field.glslType == "uint" || field.glslType == "bool");
         out << field.glslType << " " << field.accessor << "(int " << record.indexName
-            << ") { return " << (converted ? field.glslType + "(" + slot + ")" : slot)
-            << "; }\n";
+            << ") { return " << (converted ? field.glslType + "(" + slot + ")" : slot) << "; }\n";
     }
 }
 
@@ -116,8 +113,8 @@ std::string uniformBlock(const std::vector<UniformDeclaration>& scalars,
     const std::vector<RecordGlsl> records = recordLayoutsForGlsl();
     // The general shader reads every table that grows with the scene's objects from buffer
     // textures (render/SceneDataBuffers.h): a uniform array holds a few thousand vec4s at most.
-    const bool inBuffers = std::find(modules.begin(), modules.end(), "shape_interpreter.glsl") !=
-                           modules.end();
+    const bool inBuffers =
+        std::find(modules.begin(), modules.end(), "shape_interpreter.glsl") != modules.end();
 
     std::ostringstream out;
     out << "// The uniforms, each read once per pixel into the copy the modules read (uX into\n"

@@ -23,10 +23,10 @@ namespace shadergen {
 
 // One uniform that is not an array: its copy is what the modules read.
 struct UniformDeclaration {
-    std::string glslType;  // "float", "vec3", ...
-    std::string name;      // "uHitTolerance"
-    std::string copy;      // "gHitTolerance"
-    std::string module;    // the module that reads it: declared where that module is used
+    std::string glslType;    // "float", "vec3", ...
+    std::string name;        // "uHitTolerance"
+    std::string copy;        // "gHitTolerance"
+    std::string module;      // the module that reads it: declared where that module is used
     std::string guard = "";  // a define it is declared under (#if guard); empty: none
 };
 

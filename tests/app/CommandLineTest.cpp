@@ -1,7 +1,7 @@
 // The raytracer program run as a user runs it: errors give one line on standard error and a
 // non-zero status and write nothing; renders write the files they promise.
-#include "io/ImageFile.h"
 #include "app/ProgramInFolder.h"
+#include "io/ImageFile.h"
 #include "support/ChildProcess.h"
 #include "support/TestPaths.h"
 
@@ -22,7 +22,6 @@ namespace fs = std::filesystem;
 class CommandLine : public ProgramInFolder {
 protected:
     std::string scene1() const { return (sourceDirectory() / "scenes" / "scene1.in").string(); }
-
 };
 
 // --- malformed scenes ---------------------------------------------------------------------
@@ -30,8 +29,8 @@ protected:
 struct MalformedScene {
     const char* name;
     const char* text;
-    int line;            // where the error is
-    const char* token;   // what was read; empty: the end of the file
+    int line;           // where the error is
+    const char* token;  // what was read; empty: the end of the file
 };
 
 // Test names in ctest show the case's name rather than its bytes.
@@ -57,9 +56,8 @@ TEST_P(MalformedSceneFile, GivesOneLineNamingFileAndLineAndWritesNothing)
     const std::string where = scene.string() + ":" + std::to_string(malformed.line) + ":";
     EXPECT_NE(lines[0].find(where), std::string::npos)
         << "the line should name " << where << "; it is: " << lines[0];
-    const std::string read = *malformed.token == '\0'
-                                 ? std::string("end of the file")
-                                 : std::string("'") + malformed.token + "'";
+    const std::string read = *malformed.token == '\0' ? std::string("end of the file")
+                                                      : std::string("'") + malformed.token + "'";
     EXPECT_NE(lines[0].find(read), std::string::npos)
         << "the line should name what was read (" << read << "): " << lines[0];
     EXPECT_NE(lines[0].find("expected"), std::string::npos) << lines[0];
@@ -69,36 +67,43 @@ TEST_P(MalformedSceneFile, GivesOneLineNamingFileAndLineAndWritesNothing)
 
 INSTANTIATE_TEST_SUITE_P(
     Error, MalformedSceneFile,
-    ::testing::Values(
-        MalformedScene{"TruncatedFile", "0 0 5\n0 0 0\n0 1", 3, ""},
-        MalformedScene{"TooFewObjects", "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
-                                        "1 0 0 0 0 0 0 0\n2\n0 0 sphere 0 0 0 1\n",
-                       9, ""},
-        MalformedScene{"TooManyObjects", "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
-                                         "1 0 0 0 0 0 0 0\n1\n0 0 sphere 0 0 0 1\n"
-                                         "0 0 sphere 0 2 0 1\n",
-                       10, "0"},
-        MalformedScene{"PigmentIndexOutOfRange", "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
-                                                 "1 0 0 0 0 0 0 0\n1\n4 0 sphere 0 0 0 1\n",
-                       9, "4"},
-        MalformedScene{"FinishIndexOutOfRange", "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
-                                                "1 0 0 0 0 0 0 0\n1\n0 3 sphere 0 0 0 1\n",
-                       9, "3"},
-        MalformedScene{"UnknownObjectType", "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
-                                            "1 0 0 0 0 0 0 0\n1\n0 0 sphear 0 0 0 1\n",
-                       9, "sphear"},
-        MalformedScene{"NegativeRadius", "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
-                                         "1 0 0 0 0 0 0 0\n1\n0 0 sphere 0 0 0 -2\n",
-                       9, "-2"},
-        MalformedScene{"MissingTexture", "0 0 5\n0 0 0\n0 1 0\n45\n0\n1\n"
-                                         "texmap no-such-texture.ppm 1\n",
-                       7, "no-such-texture.ppm"},
-        MalformedScene{"EmissionOnANonSphere", "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
-                                               "1 3 3 3 0 0 0 0\n1\n0 0 box 0 0 0 1 1 1\n",
-                       9, "box"},
-        MalformedScene{"UnknownPigmentKind", "0 0 5\n0 0 0\n0 1 0\n45\n0\n1\nwood 1 1 1\n", 7,
-                       "wood"},
-        MalformedScene{"NonNumericToken", "0 0 5\n0 0 O\n", 2, "O"}),
+    ::testing::Values(MalformedScene{"TruncatedFile", "0 0 5\n0 0 0\n0 1", 3, ""},
+                      MalformedScene{"TooFewObjects",
+                                     "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
+                                     "1 0 0 0 0 0 0 0\n2\n0 0 sphere 0 0 0 1\n",
+                                     9, ""},
+                      MalformedScene{"TooManyObjects",
+                                     "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
+                                     "1 0 0 0 0 0 0 0\n1\n0 0 sphere 0 0 0 1\n"
+                                     "0 0 sphere 0 2 0 1\n",
+                                     10, "0"},
+                      MalformedScene{"PigmentIndexOutOfRange",
+                                     "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
+                                     "1 0 0 0 0 0 0 0\n1\n4 0 sphere 0 0 0 1\n",
+                                     9, "4"},
+                      MalformedScene{"FinishIndexOutOfRange",
+                                     "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
+                                     "1 0 0 0 0 0 0 0\n1\n0 3 sphere 0 0 0 1\n",
+                                     9, "3"},
+                      MalformedScene{"UnknownObjectType",
+                                     "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
+                                     "1 0 0 0 0 0 0 0\n1\n0 0 sphear 0 0 0 1\n",
+                                     9, "sphear"},
+                      MalformedScene{"NegativeRadius",
+                                     "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
+                                     "1 0 0 0 0 0 0 0\n1\n0 0 sphere 0 0 0 -2\n",
+                                     9, "-2"},
+                      MalformedScene{"MissingTexture",
+                                     "0 0 5\n0 0 0\n0 1 0\n45\n0\n1\n"
+                                     "texmap no-such-texture.ppm 1\n",
+                                     7, "no-such-texture.ppm"},
+                      MalformedScene{"EmissionOnANonSphere",
+                                     "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
+                                     "1 3 3 3 0 0 0 0\n1\n0 0 box 0 0 0 1 1 1\n",
+                                     9, "box"},
+                      MalformedScene{"UnknownPigmentKind",
+                                     "0 0 5\n0 0 0\n0 1 0\n45\n0\n1\nwood 1 1 1\n", 7, "wood"},
+                      MalformedScene{"NonNumericToken", "0 0 5\n0 0 O\n", 2, "O"}),
     [](const ::testing::TestParamInfo<MalformedScene>& info) {
         return std::string(info.param.name);
     });
@@ -166,7 +171,8 @@ void expectValidPpm(const fs::path& path, int width, int height)
     EXPECT_EQ(fileWidth, width);
     EXPECT_EQ(fileHeight, height);
     EXPECT_EQ(maximum, 255);
-    const std::string pixels((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    const std::string pixels((std::istreambuf_iterator<char>(file)),
+                             std::istreambuf_iterator<char>());
     EXPECT_EQ(pixels.size(), static_cast<std::size_t>(width) * height * 3)
         << "a P6 file of " << width << "x" << height << " holds exactly that many RGB bytes";
     EXPECT_NE(pixels.find_first_not_of('\0'), std::string::npos) << "the picture is all black";
@@ -208,8 +214,8 @@ TEST_F(CommandLine, InterruptDuringTimedRenderWritesTheImageAndExits130)
     options.signalWhenErrorShows = " spp";
     options.signal = SIGINT;
     const ProcessResult result = run({scene1(), "64", "48", "30", "--output", "i.exr"}, options);
-    ASSERT_TRUE(result.exited)
-        << "the program should catch SIGINT, write the image and exit; " << describe(result);
+    ASSERT_TRUE(result.exited) << "the program should catch SIGINT, write the image and exit; "
+                               << describe(result);
     EXPECT_EQ(result.exitStatus, 130) << describe(result);
     EXPECT_LT(result.seconds, 15.0) << "the program should stop soon after the interrupt";
     ASSERT_TRUE(fs::exists(folder_ / "i.exr")) << "the image so far should be written";
@@ -271,13 +277,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadArguments{"SppWithoutValue", {"64", "48", "--spp"}, "--spp"},
         BadArguments{"WidthWithoutHeight", {"64", "--spp", "1"}, "HEIGHT"},
         BadArguments{"UnknownOption", {"--fast"}, "--fast"},
-        BadArguments{"UnknownOutputFormat", {"8", "8", "--spp", "1", "--output", "x.doc"},
-                     "x.doc"},
+        BadArguments{"UnknownOutputFormat", {"8", "8", "--spp", "1", "--output", "x.doc"}, "x.doc"},
         BadArguments{"SppGivenTwice", {"8", "8", "--spp", "4", "--spp", "8"}, "--spp"},
         BadArguments{"OutputGivenTwiceUnderTwoNames",
-                     {"8", "8", "--spp", "1", "-o", "a.png", "--output", "b.png"}, "--output"},
-        BadArguments{"FlagGivenTwice", {"8", "8", "--spp", "1", "--quiet", "--quiet"},
-                     "--quiet"}),
+                     {"8", "8", "--spp", "1", "-o", "a.png", "--output", "b.png"},
+                     "--output"},
+        BadArguments{"FlagGivenTwice", {"8", "8", "--spp", "1", "--quiet", "--quiet"}, "--quiet"}),
     [](const ::testing::TestParamInfo<BadArguments>& info) {
         return std::string(info.param.name);
     });

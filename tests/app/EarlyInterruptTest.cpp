@@ -44,10 +44,9 @@ TEST_P(InterruptFromTheStart, EndsAsAnInterruptedRenderAndKeepsTheOlderFile)
     // signal can be sent to the program rather than to the test.
     options.startWithSignalBlocked = GetParam().milliseconds == 0;
     options.timeoutSeconds = 60.0;
-    const ProcessResult result =
-        run({(sourceDirectory() / "scenes" / "scene1.in").string(), "64", "48", "--spp",
-             "100000", "--output", "out.exr"},
-            options);
+    const ProcessResult result = run({(sourceDirectory() / "scenes" / "scene1.in").string(), "64",
+                                      "48", "--spp", "100000", "--output", "out.exr"},
+                                     options);
 
     ASSERT_TRUE(result.exited) << "the program must end by itself, not be killed by the "
                                   "signal: "
@@ -68,23 +67,24 @@ TEST_P(InterruptFromTheStart, EndsAsAnInterruptedRenderAndKeepsTheOlderFile)
     EXPECT_EQ(filesInFolder(), std::vector<std::string>{"out.exr"}) << "no temporary file left";
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Signals, InterruptFromTheStart,
-    ::testing::Values(EarlyInterrupt{SIGINT, 0}, EarlyInterrupt{SIGINT, 50},
-                      EarlyInterrupt{SIGINT, 200}, EarlyInterrupt{SIGTERM, 0},
-                      EarlyInterrupt{SIGTERM, 50}, EarlyInterrupt{SIGTERM, 200}),
-    [](const ::testing::TestParamInfo<EarlyInterrupt>& info) {
-        return std::string(info.param.signal == SIGINT ? "Sigint" : "Sigterm") + "At" +
-               std::to_string(info.param.milliseconds) + "ms";
-    });
+INSTANTIATE_TEST_SUITE_P(Signals, InterruptFromTheStart,
+                         ::testing::Values(EarlyInterrupt{SIGINT, 0}, EarlyInterrupt{SIGINT, 50},
+                                           EarlyInterrupt{SIGINT, 200}, EarlyInterrupt{SIGTERM, 0},
+                                           EarlyInterrupt{SIGTERM, 50},
+                                           EarlyInterrupt{SIGTERM, 200}),
+                         [](const ::testing::TestParamInfo<EarlyInterrupt>& info) {
+                             return std::string(info.param.signal == SIGINT ? "Sigint"
+                                                                            : "Sigterm") +
+                                    "At" + std::to_string(info.param.milliseconds) + "ms";
+                         });
 
 class Interrupted : public ProgramInFolder {};
 
 TEST_F(Interrupted, InfoEndsWithTheStatusOfAnInterrupt)
 {
     // Any command, not only a render: info's status says it was interrupted.
-    const ProcessResult rendered = run({(sourceDirectory() / "scenes" / "scene1.in").string(),
-                                        "8", "6", "--spp", "1", "--output", "a.exr"});
+    const ProcessResult rendered = run({(sourceDirectory() / "scenes" / "scene1.in").string(), "8",
+                                        "6", "--spp", "1", "--output", "a.exr"});
     ASSERT_TRUE(rendered.exited && rendered.exitStatus == 0) << describe(rendered);
     ProcessOptions options;
     options.signal = SIGTERM;

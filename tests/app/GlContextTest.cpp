@@ -27,9 +27,9 @@ class GlContexts : public ProgramInFolder {
 protected:
     static std::string scene1() { return (sourceDirectory() / "scenes" / "scene1.in").string(); }
 
-    ProcessResult runWith(const std::vector<std::string>& arguments,
-                          const std::vector<std::pair<std::string, std::string>>& environment = {})
-        const
+    ProcessResult
+    runWith(const std::vector<std::string>& arguments,
+            const std::vector<std::pair<std::string, std::string>>& environment = {}) const
     {
         ProcessOptions options;
         for (const auto& [name, value] : environment)
@@ -38,9 +38,9 @@ protected:
     }
 
     // A tiny render that must succeed; its summary line.
-    std::string render(std::vector<std::string> arguments,
-                       const std::vector<std::pair<std::string, std::string>>& environment = {})
-        const
+    std::string
+    render(std::vector<std::string> arguments,
+           const std::vector<std::pair<std::string, std::string>>& environment = {}) const
     {
         arguments.insert(arguments.begin(), {scene1(), "32", "24", "--spp", "2"});
         const ProcessResult result = runWith(arguments, environment);
@@ -57,7 +57,8 @@ struct RenderingDevice {
 
 RenderingDevice renderingDeviceOf(const std::string& summary)
 {
-    static const std::regex pattern(R"(\[([^:\]]+): (.+), OpenGL (.+), (fragment|compute) kernel\])");
+    static const std::regex pattern(
+        R"(\[([^:\]]+): (.+), OpenGL (.+), (fragment|compute) kernel\])");
     std::smatch match;
     if (!std::regex_search(summary, match, pattern))
         return {};
@@ -99,12 +100,12 @@ TEST_F(GlContexts, WithoutEglAHeadlessRenderFallsBackToOsMesa)
 
 TEST_F(GlContexts, WhenNoContextCanBeMadeTheErrorNamesEachWayTriedAndWhy)
 {
-    const ProcessResult result =
-        runWith({scene1(), "32", "24", "--spp", "1", "-o", "a.png"}, {kNoEglVendor, kMesaBelowGl33});
+    const ProcessResult result = runWith({scene1(), "32", "24", "--spp", "1", "-o", "a.png"},
+                                         {kNoEglVendor, kMesaBelowGl33});
     ASSERT_TRUE(result.exited) << describe(result);
     EXPECT_EQ(result.exitStatus, 1) << describe(result);
-    for (const char* tried : {"no OpenGL context could be made", "EGL devices: ",
-                              "EGL surfaceless: ", "OSMesa: "})
+    for (const char* tried :
+         {"no OpenGL context could be made", "EGL devices: ", "EGL surfaceless: ", "OSMesa: "})
         EXPECT_NE(result.standardError.find(tried), std::string::npos)
             << "the error names '" << tried << "': " << result.standardError;
     EXPECT_TRUE(filesInFolder().empty()) << "nothing written";
@@ -187,8 +188,8 @@ TEST_F(GlContexts, UnknownKindsAndContradictionsAreCommandLineErrors)
     for (std::vector<std::string> arguments : wrong) {
         arguments.insert(arguments.begin(), {scene1(), "32", "24", "--spp", "1"});
         const ProcessResult result = run(arguments);
-        EXPECT_EQ(result.exitStatus, 2) << arguments[5] << " " << arguments[6] << ": "
-                                        << describe(result);
+        EXPECT_EQ(result.exitStatus, 2)
+            << arguments[5] << " " << arguments[6] << ": " << describe(result);
         EXPECT_EQ(nonEmptyLines(result.standardError).size(), 1u) << describe(result);
     }
     const ProcessResult endless = run({scene1(), "--gl", "egl"});

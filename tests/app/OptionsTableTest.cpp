@@ -9,8 +9,8 @@
 #include "render/SceneUniforms.h"
 #include "scene/SceneParser.h"
 #include "settings/SettingsTable.h"
-#include "shadergen/UniformBlock.h"
 #include "shadergen/ShaderSource.h"
+#include "shadergen/UniformBlock.h"
 
 #include <gtest/gtest.h>
 
@@ -82,19 +82,18 @@ TEST(OptionsTable, EverySettingWithAFlagIsInHelpWithTheStructsDefault)
 
 TEST(OptionsTable, ShortSpellingsAreListedInHelp)
 {
-    EXPECT_NE(helpOf("--output").find("-o, --output FILE"), std::string::npos)
-        << app::usageText();
+    EXPECT_NE(helpOf("--output").find("-o, --output FILE"), std::string::npos) << app::usageText();
     EXPECT_NE(helpOf("--help").find("-h, --help"), std::string::npos) << app::usageText();
 }
 
 TEST(OptionsTable, AdaptiveTileHelpStatesTheDefaultThePlannerUses)
 {
-    EXPECT_NE(helpOf("--adaptive-tile").find(
-                  "(default " + std::to_string(film::AdaptiveSampling{}.tileSize)),
+    EXPECT_NE(helpOf("--adaptive-tile")
+                  .find("(default " + std::to_string(film::AdaptiveSampling{}.tileSize)),
               std::string::npos)
         << helpOf("--adaptive-tile");
-    EXPECT_NE(helpOf("--min-spp").find(
-                  "(default " + std::to_string(film::AdaptiveSampling{}.minimumSamples)),
+    EXPECT_NE(helpOf("--min-spp")
+                  .find("(default " + std::to_string(film::AdaptiveSampling{}.minimumSamples)),
               std::string::npos)
         << helpOf("--min-spp");
 }
@@ -193,9 +192,8 @@ TEST(OptionsTable, EveryUniformSettingIsDeclaredWithItsModuleAndReadInTheShader)
             const bool hasModule =
                 std::find(shader.pieces.begin(), shader.pieces.end(),
                           "modules/" + row.description.uniformModule) != shader.pieces.end();
-            const bool declared =
-                shader.uniforms.find("uniform " + std::string(row.glslType) + " " + uniform + ";") !=
-                std::string::npos;
+            const bool declared = shader.uniforms.find("uniform " + std::string(row.glslType) +
+                                                       " " + uniform + ";") != std::string::npos;
             EXPECT_EQ(declared, hasModule)
                 << uniform << " should be declared exactly where " << row.description.uniformModule
                 << " is part of the shader";
@@ -211,15 +209,16 @@ TEST(OptionsTable, EveryUniformSettingIsDeclaredWithItsModuleAndReadInTheShader)
 TEST(OptionsTable, NoModuleDeclaresAGeneratedUniformOrCopyOfItsOwn)
 {
     std::set<std::string> generated;
-    for (const shadergen::UniformDeclaration& declaration : render::pathTracerUniformDeclarations()) {
+    for (const shadergen::UniformDeclaration& declaration :
+         render::pathTracerUniformDeclarations()) {
         generated.insert(declaration.name);
         generated.insert(declaration.copy);
     }
     for (const auto& entry : fs::directory_iterator(kSourceDirectory / "shaders" / "modules")) {
         const std::string text = fileText(entry.path());
         for (const std::string& name : generated)
-            EXPECT_FALSE(std::regex_search(text, std::regex("^\\s*(uniform\\s+)?\\w+\\s+" + name +
-                                                             "\\s*[;=\\[]")))
+            EXPECT_FALSE(std::regex_search(
+                text, std::regex("^\\s*(uniform\\s+)?\\w+\\s+" + name + "\\s*[;=\\[]")))
                 << entry.path().filename() << " declares " << name
                 << ", which the generated preamble declares";
     }

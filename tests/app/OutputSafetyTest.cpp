@@ -50,8 +50,8 @@ protected:
 struct UnwritableOutput {
     const char* name;
     std::vector<std::string> outputOptions;  // the options naming the outputs
-    const char* userPath;                   // the path the message must name
-    int reason;                             // errno whose strerror the message must hold
+    const char* userPath;                    // the path the message must name
+    int reason;                              // errno whose strerror the message must hold
 };
 
 void PrintTo(const UnwritableOutput& output, std::ostream* out)
@@ -86,16 +86,17 @@ TEST_P(UnwritableOutputPath, FailsAtOnceWithTheSystemsReasonAndTheUsersPath)
 INSTANTIATE_TEST_SUITE_P(
     Output, UnwritableOutputPath,
     ::testing::Values(
-        UnwritableOutput{"PngInAMissingFolder", {"--output", "missing/x.png"}, "missing/x.png",
-                         ENOENT},
-        UnwritableOutput{"PfmInAMissingFolder", {"--output", "missing/x.pfm"}, "missing/x.pfm",
-                         ENOENT},
-        UnwritableOutput{"ExrUnderAPlainFile", {"--output", "plain-file/x.exr"},
-                         "plain-file/x.exr", ENOTDIR},
+        UnwritableOutput{
+            "PngInAMissingFolder", {"--output", "missing/x.png"}, "missing/x.png", ENOENT},
+        UnwritableOutput{
+            "PfmInAMissingFolder", {"--output", "missing/x.pfm"}, "missing/x.pfm", ENOENT},
+        UnwritableOutput{
+            "ExrUnderAPlainFile", {"--output", "plain-file/x.exr"}, "plain-file/x.exr", ENOTDIR},
         UnwritableOutput{"OutputThatIsAFolder", {"--output", "./"}, "./", EISDIR},
         UnwritableOutput{"StatisticsInAMissingFolder",
                          {"--output", "a.png", "--stats-output", "missing/s.exr"},
-                         "missing/s.exr", ENOENT}),
+                         "missing/s.exr",
+                         ENOENT}),
     [](const ::testing::TestParamInfo<UnwritableOutput>& info) {
         return std::string(info.param.name);
     });
@@ -154,8 +155,8 @@ TEST_F(Outputs, OutputAndStatisticsNamingOneFileThroughALinkedFolderAreRefused)
 {
     fs::create_directories(folder_ / "real");
     fs::create_directory_symlink(folder_ / "real", folder_ / "link");
-    const ProcessResult result = run({scene1(), "8", "8", "--spp", "1", "--output",
-                                      "real/same.exr", "--stats-output", "link/same.exr"});
+    const ProcessResult result = run({scene1(), "8", "8", "--spp", "1", "--output", "real/same.exr",
+                                      "--stats-output", "link/same.exr"});
     ASSERT_TRUE(result.exited) << describe(result);
     EXPECT_EQ(result.exitStatus, 2) << describe(result);
     EXPECT_TRUE(fs::is_empty(folder_ / "real")) << "nothing written";
@@ -213,8 +214,8 @@ TEST_F(Outputs, InterruptDuringALongFirstFrameStopsItAndWritesNothing)
     options.signalAfterSeconds = 4.0;
     options.startWithSignalBlocked = true;
     options.signal = SIGINT;
-    const ProcessResult result = run({scene1(), "1280", "960", "--spp", "64",
-                                      "--samples-per-frame", "64", "--output", "out.exr"},
+    const ProcessResult result = run({scene1(), "1280", "960", "--spp", "64", "--samples-per-frame",
+                                      "64", "--output", "out.exr"},
                                      options);
     expectInterruptedWithTheOlderFileKept(result);
 }
@@ -222,14 +223,13 @@ TEST_F(Outputs, InterruptDuringALongFirstFrameStopsItAndWritesNothing)
 TEST_F(Outputs, ATimedRenderTooShortForOneSampleWritesNothingAndSaysSo)
 {
     write("out.png", "an earlier render");
-    const ProcessResult result = run({scene1(), "640", "480", "0.001", "--samples-per-frame",
-                                      "64", "--output", "out.png"});
+    const ProcessResult result =
+        run({scene1(), "640", "480", "0.001", "--samples-per-frame", "64", "--output", "out.png"});
     ASSERT_TRUE(result.exited) << describe(result);
     EXPECT_EQ(result.exitStatus, 1) << describe(result);
     EXPECT_EQ(contents("out.png"), "an earlier render") << "the older file must be kept";
     EXPECT_EQ(filesInFolder(), std::vector<std::string>{"out.png"});
-    EXPECT_NE(result.standardError.find("nothing written"), std::string::npos)
-        << describe(result);
+    EXPECT_NE(result.standardError.find("nothing written"), std::string::npos) << describe(result);
 }
 
 // --- a full disk loses nothing ----------------------------------------------------------
@@ -319,9 +319,9 @@ TEST_F(Outputs, AMergeWhosePictureDoesNotFitWritesNeitherFile)
         run({"merge", "disk/m.exr", "1.exr", "2.exr", "--png", "disk/m.png"});
     ASSERT_TRUE(result.exited) << describe(result);
     EXPECT_EQ(result.exitStatus, 1) << describe(result);
-    EXPECT_NE(result.standardError.find("cannot write disk/m.png: " +
-                                        std::string(std::strerror(ENOSPC))),
-              std::string::npos)
+    EXPECT_NE(
+        result.standardError.find("cannot write disk/m.png: " + std::string(std::strerror(ENOSPC))),
+        std::string::npos)
         << describe(result);
     EXPECT_EQ(contents("disk/m.png"), "an earlier render");
     std::vector<std::string> onDisk;
@@ -342,12 +342,11 @@ TEST_F(Outputs, ARenderRemovesTheTemporaryFilesOfItsOutputThatAnEndedProcessLeft
     ::waitpid(ended, nullptr, 0);
     char host[256] = {};
     ::gethostname(host, sizeof host - 1);
-    const std::string left = ".out.partial-" + std::string(host) + "-" + std::to_string(ended) +
-                             "-0.exr";
+    const std::string left =
+        ".out.partial-" + std::string(host) + "-" + std::to_string(ended) + "-0.exr";
     write(left, std::string(100000, 'x'));
     write("other.exr", "another render's");
-    const ProcessResult result =
-        run({scene1(), "8", "6", "--spp", "1", "--output", "out.exr"});
+    const ProcessResult result = run({scene1(), "8", "6", "--spp", "1", "--output", "out.exr"});
     ASSERT_TRUE(result.exited && result.exitStatus == 0) << describe(result);
     const auto lines = nonEmptyLines(result.standardOutput);
     ASSERT_GE(lines.size(), 2u) << describe(result);

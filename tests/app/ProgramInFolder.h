@@ -17,8 +17,8 @@ namespace cli_tests {
 // How a run ended and what it printed, for failure messages.
 inline std::string describe(const testing_support::ProcessResult& result)
 {
-    return result.describeEnd() + "\n--- stdout:\n" + result.standardOutput +
-           "--- stderr:\n" + result.standardError;
+    return result.describeEnd() + "\n--- stdout:\n" + result.standardOutput + "--- stderr:\n" +
+           result.standardError;
 }
 
 class ProgramInFolder : public ::testing::Test {

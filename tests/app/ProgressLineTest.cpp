@@ -41,11 +41,11 @@ protected:
         ProcessOptions options;
         options.terminalColumns = columns;
         const ProcessResult result =
-            run({(sourceDirectory() / "scenes" / "scene1.in").string(), "32", "24", "--spp",
-                 "40", "--samples-per-frame", "1", "--output", "p.png"},
+            run({(sourceDirectory() / "scenes" / "scene1.in").string(), "32", "24", "--spp", "40",
+                 "--samples-per-frame", "1", "--output", "p.png"},
                 options);
-        EXPECT_TRUE(result.exited && result.exitStatus == 0)
-            << result.describeEnd() << "\n" << result.standardError;
+        EXPECT_TRUE(result.exited && result.exitStatus == 0) << result.describeEnd() << "\n"
+                                                             << result.standardError;
         const auto lines = drawnLines(result.standardError);
         EXPECT_FALSE(lines.empty()) << "a progress line should be shown on a terminal";
         return lines;

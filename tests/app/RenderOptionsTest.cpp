@@ -67,7 +67,8 @@ TEST_F(RenderOptions, CameraReplacesTheScenesCameraAndIsRecorded)
     render({"--camera", "eye 1 -6 4 look-at 1 10 -2 up 0 0 1 fov 50", "--output", "moved.exr"});
     const film::RenderFile file = film::readRenderFile(folder_ / "file.exr");
     const film::RenderFile moved = film::readRenderFile(folder_ / "moved.exr");
-    EXPECT_EQ(film::formatCamera(moved.metadata.camera), "eye 1 -6 4 target 1 10 -2 up 0 0 1 fovy 50");
+    EXPECT_EQ(film::formatCamera(moved.metadata.camera),
+              "eye 1 -6 4 target 1 10 -2 up 0 0 1 fovy 50");
     EXPECT_NE(file.accumulation.estimate.pixels, moved.accumulation.estimate.pixels)
         << "another camera shows another picture";
 }
@@ -142,8 +143,8 @@ TEST_F(RenderOptions, WithStrictASceneThatCannotEmitLightIsRefused)
 
 TEST_F(RenderOptions, ATargetErrorNotReachedAtTheTimeLimitHasItsOwnExitStatus)
 {
-    const ProcessResult result = run({scene1(), "24", "16", "1", "--target-error", "0.0001",
-                                      "--output", "short.exr"});
+    const ProcessResult result =
+        run({scene1(), "24", "16", "1", "--target-error", "0.0001", "--output", "short.exr"});
     EXPECT_EQ(result.exitStatus, kTargetNotReached) << describe(result);
     EXPECT_NE(result.standardOutput.find("stopped at the time limit before it"), std::string::npos)
         << describe(result);
@@ -162,10 +163,10 @@ TEST_F(RenderOptions, SummaryJsonHoldsTheSummarysFields)
 {
     render({"--quiet", "--summary-json", "summary.json", "--output", "s.png"});
     const std::string json = read("summary.json");
-    for (const char* field :
-         {"\"width\": 24", "\"height\": 16", "\"samplesPerPixel\": 1", "\"seconds\": ",
-          "\"megapathsPerSecond\": ", "\"targetError\": null", "\"errorReached\": null",
-          "\"stopReason\": \"samples\"", "\"exitStatus\": 0", "\"outputs\": [\"s.png\"]"})
+    for (const char* field : {"\"width\": 24", "\"height\": 16", "\"samplesPerPixel\": 1",
+                              "\"seconds\": ", "\"megapathsPerSecond\": ", "\"targetError\": null",
+                              "\"errorReached\": null", "\"stopReason\": \"samples\"",
+                              "\"exitStatus\": 0", "\"outputs\": [\"s.png\"]"})
         EXPECT_NE(json.find(field), std::string::npos) << field << " not in:\n" << json;
     EXPECT_EQ(json.front(), '{');
     EXPECT_EQ(json.substr(json.size() - 2), "}\n");

@@ -4,9 +4,9 @@
 // nothing, samples that do not estimate one image or that repeat a seed's samples; a resumed
 // render goes on where an interrupted one stopped and loses nothing.
 #include "app/ProgramInFolder.h"
+#include "film/RenderFile.h"
 #include "io/ImageFile.h"
 #include "io/Sha256.h"
-#include "film/RenderFile.h"
 #include "support/ChildProcess.h"
 #include "support/ImageComparison.h"
 #include "support/TestPaths.h"
@@ -155,7 +155,8 @@ TEST_F(ScaleOut, ShardsMergedAgreeWithOneRenderOfAllTheirSamples)
 TEST_F(ScaleOut, MergeIsAssociative)
 {
     for (const char* seed : {"1", "2", "3"})
-        render({"32", "24", "--spp", "4", "--seed", seed, "--output", std::string("s") + seed + ".exr"});
+        render({"32", "24", "--spp", "4", "--seed", seed, "--output",
+                std::string("s") + seed + ".exr"});
     merge({"ab.exr", "s1.exr", "s2.exr"});
     merge({"ab_c.exr", "ab.exr", "s3.exr"});
     merge({"bc.exr", "s2.exr", "s3.exr"});
@@ -203,14 +204,58 @@ TEST_F(ScaleOut, InfoOnAMergedFileShowsTheSummedSamplesAndTheSeeds)
 
 TEST_F(ScaleOut, EveryOutputCarriesTheSettingsSeedSamplesSceneAndProgram)
 {
-    render({"24", "18", "--spp", "3", "--seed", "42", "--max-bounces", "7", "--rr-depth", "3",
-            "--hit-tolerance", "0.3", "--fresnel", "exact", "--no-mis", "--sampler", "independent",
-            "--max-steps", "300", "--over-relaxation", "1.1", "--step-scale", "0.9",
-            "--output", "a.exr", "--stats-output", "s.exr"});
-    render({"24", "18", "--spp", "3", "--seed", "42", "--max-bounces", "7", "--rr-depth", "3",
-            "--hit-tolerance", "0.3", "--fresnel", "exact", "--no-mis", "--sampler", "independent",
-            "--max-steps", "300", "--over-relaxation", "1.1", "--step-scale", "0.9",
-            "--output", "a.png"});
+    render({"24",
+            "18",
+            "--spp",
+            "3",
+            "--seed",
+            "42",
+            "--max-bounces",
+            "7",
+            "--rr-depth",
+            "3",
+            "--hit-tolerance",
+            "0.3",
+            "--fresnel",
+            "exact",
+            "--no-mis",
+            "--sampler",
+            "independent",
+            "--max-steps",
+            "300",
+            "--over-relaxation",
+            "1.1",
+            "--step-scale",
+            "0.9",
+            "--output",
+            "a.exr",
+            "--stats-output",
+            "s.exr"});
+    render({"24",
+            "18",
+            "--spp",
+            "3",
+            "--seed",
+            "42",
+            "--max-bounces",
+            "7",
+            "--rr-depth",
+            "3",
+            "--hit-tolerance",
+            "0.3",
+            "--fresnel",
+            "exact",
+            "--no-mis",
+            "--sampler",
+            "independent",
+            "--max-steps",
+            "300",
+            "--over-relaxation",
+            "1.1",
+            "--step-scale",
+            "0.9",
+            "--output",
+            "a.png"});
     const ProcessResult version = run({"--version"});
     for (const char* file : {"a.exr", "s.exr", "a.png"}) {
         const io::ImageFileContents contents = io::readImageFile(folder_ / file);
@@ -367,8 +412,9 @@ TEST_F(ScaleOut, ResumeAfterAnInterruptEqualsAnUninterruptedRender)
     EXPECT_GT(resumed.metadata.renderSeconds, before.metadata.renderSeconds)
         << "the render time adds up";
 
-    const Comparison comparison = compareImages(asRenderedImage(resumed.accumulation),
-                                                asRenderedImage(readRender("other.exr").accumulation));
+    const Comparison comparison =
+        compareImages(asRenderedImage(resumed.accumulation),
+                      asRenderedImage(readRender("other.exr").accumulation));
     EXPECT_TRUE(comparison.passed()) << comparison.describe();
     // Stronger than noise: the same seed's next indices give the very render that never
     // stopped.
@@ -413,9 +459,9 @@ TEST_F(ScaleOut, ResumeRefusesAnotherSizeOrScene)
     render({"16", "12", "--spp", "2", "--output", "r.exr"});
     expectRefused({scene1(), "12", "16", "--resume", "r.exr", "--spp", "4"},
                   {"r.exr", "size", "16x12", "12x16"});
-    expectRefused({(sourceDirectory() / "scenes" / "scene2.in").string(), "--resume", "r.exr",
-                   "--spp", "4"},
-                  {"r.exr", "scene"});
+    expectRefused(
+        {(sourceDirectory() / "scenes" / "scene2.in").string(), "--resume", "r.exr", "--spp", "4"},
+        {"r.exr", "scene"});
 }
 
 TEST_F(ScaleOut, ResumeRefusesAnSppItHoldsAlready)
@@ -437,11 +483,17 @@ TEST_F(ScaleOut, ResumeWithoutAnEndIsACommandLineError)
 TEST_F(ScaleOut, ResumeRefusesEveryImageChangingSettingThatDiffers)
 {
     render({"16", "12", "--spp", "2", "--output", "r.exr"});
-    const std::vector<std::vector<std::string>> changes = {
-        {"--hit-tolerance", "0.5"}, {"--max-steps", "100"},   {"--over-relaxation", "1.5"},
-        {"--step-scale", "0.5"},    {"--max-bounces", "3"},   {"--rr-depth", "1"},
-        {"--no-mis"},               {"--fresnel", "exact"},   {"--sampler", "independent"},
-        {"--exact-geometry"},       {"--no-specialize"}};
+    const std::vector<std::vector<std::string>> changes = {{"--hit-tolerance", "0.5"},
+                                                           {"--max-steps", "100"},
+                                                           {"--over-relaxation", "1.5"},
+                                                           {"--step-scale", "0.5"},
+                                                           {"--max-bounces", "3"},
+                                                           {"--rr-depth", "1"},
+                                                           {"--no-mis"},
+                                                           {"--fresnel", "exact"},
+                                                           {"--sampler", "independent"},
+                                                           {"--exact-geometry"},
+                                                           {"--no-specialize"}};
     for (const std::vector<std::string>& change : changes) {
         SCOPED_TRACE(change.front());
         std::vector<std::string> arguments = {scene1(), "--resume", "r.exr", "--spp", "4"};

@@ -42,7 +42,6 @@ protected:
         const fs::path scene = write("broken.in", kUserSdfScene);
         return run({scene.string(), "32", "24", "--spp", "1", "--output", "out.png"});
     }
-
 };
 
 std::string describe(const ProcessResult& result)
@@ -61,8 +60,8 @@ void expectErrorAt(const ProcessResult& result, const std::string& file, long li
 {
     const std::string location = file + ":" + std::to_string(line) + ": error: " + message;
     const std::string quoted = location + "\n    | " + code + "\n";
-    EXPECT_TRUE(contains(result.standardError, quoted))
-        << "expected the message\n" << quoted << "in " << describe(result);
+    EXPECT_TRUE(contains(result.standardError, quoted)) << "expected the message\n"
+                                                        << quoted << "in " << describe(result);
     EXPECT_FALSE(contains(result.standardError, "<preamble"))
         << "no message belongs to the preamble here; " << describe(result);
 }

@@ -81,8 +81,7 @@ TEST_F(TargetError, ARenderToATargetReachesItAgainstAnIndependentReference)
 {
     const std::string summary =
         render({"48", "36", "60", "--target-error", "0.05", "--output", "target.exr"});
-    EXPECT_NE(summary.find("target 5 %, adaptive sampling: reached"), std::string::npos)
-        << summary;
+    EXPECT_NE(summary.find("target 5 %, adaptive sampling: reached"), std::string::npos) << summary;
     const StatedError stated = statedError(summary);
     ASSERT_GT(stated.estimate, 0.0) << summary;
     EXPECT_LE(stated.estimate + 2.0 * stated.uncertainty, 0.05);
@@ -121,9 +120,8 @@ TEST_F(TargetError, AnAdaptiveRenderStopsCloseUnderItsTargetNotFarBelowIt)
 
 TEST_F(TargetError, WithIndependentSamplesTheEstimateIsTheMeasuredError)
 {
-    const std::string summary =
-        render({"48", "36", "60", "--target-error", "0.08", "--sampler", "independent",
-                "--output", "target.exr"});
+    const std::string summary = render({"48", "36", "60", "--target-error", "0.08", "--sampler",
+                                        "independent", "--output", "target.exr"});
     render({"48", "36", "--spp", "4096", "--sampler", "independent", "--seed", "7", "--output",
             "reference.exr"});
     const StatedError stated = statedError(summary);
@@ -196,9 +194,8 @@ TEST_F(TargetError, ATargetNoRenderReachesEndsAtTheTimeLimitAndSaysSo)
 
 TEST_F(TargetError, ASampleLimitEndsAnAdaptiveRenderAndSaysSo)
 {
-    const std::string summary = render({"48", "36", "--spp", "40", "--target-error", "0.0001",
-                                        "--output", "target.exr"},
-                                       3);
+    const std::string summary = render(
+        {"48", "36", "--spp", "40", "--target-error", "0.0001", "--output", "target.exr"}, 3);
     EXPECT_NE(summary.find("stopped at --spp 40 before it"), std::string::npos) << summary;
     const film::SampleCountSpan span = film::samplesTakenSpan(accumulation("target.exr"));
     EXPECT_EQ(span.most, 40);

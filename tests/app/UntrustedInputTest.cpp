@@ -26,8 +26,8 @@ protected:
     // An 8x6 render of scene 1, 4 samples per pixel, of `seed`.
     void renderShard(const std::string& seed, const std::string& name) const
     {
-        const ProcessResult result = run({scene1(), "8", "6", "--spp", "4", "--seed", seed,
-                                          "--quiet", "--output", name});
+        const ProcessResult result =
+            run({scene1(), "8", "6", "--spp", "4", "--seed", seed, "--quiet", "--output", name});
         ASSERT_TRUE(result.exited && result.exitStatus == 0) << describe(result);
     }
 
@@ -115,10 +115,11 @@ TEST_F(UntrustedInput, MergeRefusesSamplesPerPixelThatSumBeyondWhatAPixelHolds)
     // Each file within the largest count, 2^24 samples per pixel; together twice that. The
     // sum is 64-bit, and refused.
     renderTwoShards();
-    for (const auto& [base, seed, full] : {std::tuple{"a.exr", "1", "c.exr"},
-                                           std::tuple{"b.exr", "2", "d.exr"}}) {
+    for (const auto& [base, seed, full] :
+         {std::tuple{"a.exr", "1", "c.exr"}, std::tuple{"b.exr", "2", "d.exr"}}) {
         const std::string ranges = std::string(seed) + ":0+16777216";
-        writeCraftedRenderFile({"full", "",
+        writeCraftedRenderFile({"full",
+                                "",
                                 [&](io::ImageFileContents& file) {
                                     setAttribute(file, "raytracer:samplesPerPixel", "16777216");
                                     setAttribute(file, "raytracer:sampleRanges", ranges);

@@ -6,8 +6,7 @@ namespace interaction_tests {
 
 // Sets the pixel's second moments so that its samples kept have variance `sampleVariance`
 // (s^2 = M2 / (n - 1), every channel).
-inline void setSampleVariance(film::Accumulation& accumulation, int x, int y,
-                              float sampleVariance)
+inline void setSampleVariance(film::Accumulation& accumulation, int x, int y, float sampleVariance)
 {
     const float kept = accumulation.samplesKept(x, y);
     for (int c = 0; c < 3; ++c)
@@ -17,7 +16,7 @@ inline void setSampleVariance(film::Accumulation& accumulation, int x, int y,
 // Every pixel: `samples` samples kept of mean `radiance` (every channel), of variance
 // `sampleVariance`.
 inline film::Accumulation accumulationOf(int width, int height, float radiance, float samples,
-                                           float sampleVariance)
+                                         float sampleVariance)
 {
     film::Accumulation accumulation(width, height);
     for (int y = 0; y < height; ++y)

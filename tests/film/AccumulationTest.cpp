@@ -19,7 +19,8 @@ void accumulateSample(film::Accumulation& accumulation, int x, int y, const floa
     for (int c = 0; c < 3; ++c) {
         const float deviation = value[c] - accumulation.estimate.at(x, y, c);
         accumulation.estimate.at(x, y, c) += deviation / count;
-        accumulation.moments.at(x, y, c) += deviation * (value[c] - accumulation.estimate.at(x, y, c));
+        accumulation.moments.at(x, y, c) +=
+            deviation * (value[c] - accumulation.estimate.at(x, y, c));
     }
     accumulation.estimate.at(x, y, 3) = count;
 }
@@ -35,8 +36,8 @@ Samples heavyTailedSamples(std::mt19937& random, int count)
     Samples samples;
     for (int i = 0; i < count; ++i) {
         const float boost = uniform(random) < 0.02f ? 50.0f : 1.0f;
-        samples.values.push_back(
-            {boost * uniform(random), boost * uniform(random) * 0.5f, boost * uniform(random) * 2.0f});
+        samples.values.push_back({boost * uniform(random), boost * uniform(random) * 0.5f,
+                                  boost * uniform(random) * 2.0f});
     }
     return samples;
 }
@@ -61,8 +62,8 @@ constexpr int kHeight = 6;
 
 // One accumulation per part: part p of every pixel's samples accumulated as the shader
 // accumulates them.
-std::vector<film::Accumulation> accumulateInParts(
-    const std::vector<std::vector<Samples>>& samples, int parts)
+std::vector<film::Accumulation> accumulateInParts(const std::vector<std::vector<Samples>>& samples,
+                                                  int parts)
 {
     std::vector<film::Accumulation> accumulations(parts, film::Accumulation(kWidth, kHeight));
     for (int y = 0; y < kHeight; ++y)

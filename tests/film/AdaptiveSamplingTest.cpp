@@ -13,7 +13,7 @@ namespace {
 
 // Every pixel as accumulationOf, each sample's standard deviation `deviation`.
 film::Accumulation noisyAccumulation(int width, int height, float radiance, float samples,
-                                       float deviation)
+                                     float deviation)
 {
     return accumulationOf(width, height, radiance, samples, deviation * deviation);
 }
@@ -50,8 +50,8 @@ TEST(AdaptiveSampling, NoPixelStopsBeforeTheMinimum)
 
 TEST(AdaptiveSampling, APixelWithoutNoiseStopsAtTheMinimum)
 {
-    const film::AdaptivePlan plan = film::planAdaptiveSampling(
-        noisyAccumulation(8, 8, 1.0f, 40, 0.0f), aimingAt(0.01, 32, 8));
+    const film::AdaptivePlan plan =
+        film::planAdaptiveSampling(noisyAccumulation(8, 8, 1.0f, 40, 0.0f), aimingAt(0.01, 32, 8));
     EXPECT_EQ(tileTarget(plan, 0, 0), 32.0f);
     EXPECT_EQ(plan.activeTiles, 0);
 }
@@ -65,16 +65,14 @@ TEST(AdaptiveSampling, SendsSamplesWhereTheNoiseIs)
     for (int y = 0; y < 8; ++y)
         for (int x = 0; x < 8; ++x)
             setDeviation(accumulation, x, y, 1.0f);
-    const film::AdaptivePlan plan =
-        film::planAdaptiveSampling(accumulation, aimingAt(0.01, 1, 8));
+    const film::AdaptivePlan plan = film::planAdaptiveSampling(accumulation, aimingAt(0.01, 1, 8));
     // Planned deviations: 1 on the left, 0.4 in column 8 (three of its nine neighbours at 1,
     // six at 0.1), 0.1 beyond. n = planned * k with k = mean(s^2 / planned) / (E mean)^2 =
     // (64 * 1 + 8 * 0.01 / 0.4 + 56 * 0.01 / 0.1) / 128 / 1e-4 = 5453.1: the left tile takes
     // 5454, the right one 0.4 k = 2182 (its column 8).
     EXPECT_NEAR(tileTarget(plan, 0, 0), 5454.0f, 1.0f);
     EXPECT_NEAR(tileTarget(plan, 1, 0), 2182.0f, 1.0f);
-    const film::AdaptivePlan alone =
-        film::planAdaptiveSampling(accumulation, aimingAt(0.01, 1, 1));
+    const film::AdaptivePlan alone = film::planAdaptiveSampling(accumulation, aimingAt(0.01, 1, 1));
     EXPECT_NEAR(tileTarget(alone, 12, 0), 546.0f, 1.0f) << "0.1 k, away from the noisy half";
 }
 
@@ -87,8 +85,7 @@ TEST(AdaptiveSampling, AQuietPixelAmongNoisyOnesPlansAsItsNeighbourhood)
 {
     film::Accumulation accumulation = noisyAccumulation(9, 9, 1.0f, 32, 1.0f);
     setDeviation(accumulation, 4, 4, 0.0f);
-    const film::AdaptivePlan plan =
-        film::planAdaptiveSampling(accumulation, aimingAt(0.05, 1, 1));
+    const film::AdaptivePlan plan = film::planAdaptiveSampling(accumulation, aimingAt(0.05, 1, 1));
     const float quiet = tileTarget(plan, 4, 4);
     const float noisy = tileTarget(plan, 0, 0);
     EXPECT_GT(quiet, 0.85f * noisy) << "8 of its 9 neighbours have deviation 1";
@@ -127,8 +124,7 @@ TEST(AdaptiveSampling, ATileTakesTheLargestCountOfItsPixelsAndTilesCountFromTheB
 {
     film::Accumulation accumulation = noisyAccumulation(8, 8, 1.0f, 16, 0.0f);
     setDeviation(accumulation, 1, 1, 1.0f);  // near the top left: tile row 1 of tiles of 4
-    const film::AdaptivePlan plan =
-        film::planAdaptiveSampling(accumulation, aimingAt(0.01, 2, 4));
+    const film::AdaptivePlan plan = film::planAdaptiveSampling(accumulation, aimingAt(0.01, 2, 4));
     // 1 * (1 / 64) / 0.01^2
     EXPECT_EQ(tileTarget(plan, 0, 1), 157.0f);
     EXPECT_EQ(tileTarget(plan, 0, 0), 2.0f);

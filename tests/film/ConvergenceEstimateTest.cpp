@@ -14,7 +14,7 @@ namespace {
 
 // Every pixel as accumulationOf, its variance of the mean s^2 / n `varianceOfMean`.
 film::Accumulation uniformAccumulation(int width, int height, float radiance, float samples,
-                                         float varianceOfMean)
+                                       float varianceOfMean)
 {
     return accumulationOf(width, height, radiance, samples, varianceOfMean * samples);
 }

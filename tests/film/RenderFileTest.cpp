@@ -1,8 +1,8 @@
 // The render's own files (film/RenderFile.h): an EXR keeps the accumulation and the
 // metadata exactly; the statistics file names its channels for what they are.
+#include "film/RenderFile.h"
 #include "io/ImageFile.h"
 #include "io/OutputFiles.h"
-#include "film/RenderFile.h"
 
 #include <gtest/gtest.h>
 

@@ -62,7 +62,8 @@ settingChanges()
     static const std::vector<std::pair<std::string, std::function<void(settings::RenderSettings&)>>>
         changes = {
             {"--exposure", [](settings::RenderSettings& s) { s.exposure = 2.0f; }},
-            {"--tone-curve", [](settings::RenderSettings& s) { s.toneCurve = settings::ToneCurveKind::Agx; }},
+            {"--tone-curve",
+             [](settings::RenderSettings& s) { s.toneCurve = settings::ToneCurveKind::Agx; }},
             {"--hit-tolerance", [](settings::RenderSettings& s) { s.hitTolerance = 0.5f; }},
             {"--max-steps", [](settings::RenderSettings& s) { s.maxMarchSteps = 64; }},
             {"--over-relaxation", [](settings::RenderSettings& s) { s.overRelaxation = 1.0f; }},
@@ -70,12 +71,19 @@ settingChanges()
             {"--max-bounces", [](settings::RenderSettings& s) { s.maxBounces = 8; }},
             {"--rr-depth", [](settings::RenderSettings& s) { s.russianRouletteDepth = 2; }},
             {"--no-mis", [](settings::RenderSettings& s) { s.multipleImportanceSampling = false; }},
-            {"--fresnel", [](settings::RenderSettings& s) { s.dielectricFresnel = settings::FresnelModel::Exact; }},
-            {"--no-energy-compensation", [](settings::RenderSettings& s) { s.energyCompensation = false; }},
-            {"--masking", [](settings::RenderSettings& s) { s.masking = settings::MaskingModel::Separable; }},
-            {"--sampler", [](settings::RenderSettings& s) { s.sampler = settings::SamplerKind::Independent; }},
+            {"--fresnel",
+             [](settings::RenderSettings& s) {
+                 s.dielectricFresnel = settings::FresnelModel::Exact;
+             }},
+            {"--no-energy-compensation",
+             [](settings::RenderSettings& s) { s.energyCompensation = false; }},
+            {"--masking",
+             [](settings::RenderSettings& s) { s.masking = settings::MaskingModel::Separable; }},
+            {"--sampler",
+             [](settings::RenderSettings& s) { s.sampler = settings::SamplerKind::Independent; }},
             {"--exact-geometry", [](settings::RenderSettings& s) { s.exactGeometry = true; }},
-            {"--no-specialize", [](settings::RenderSettings& s) { s.variant = settings::ShaderVariant::General; }},
+            {"--no-specialize",
+             [](settings::RenderSettings& s) { s.variant = settings::ShaderVariant::General; }},
             {"the window's panel", [](settings::RenderSettings& s) { s.environmentLight = false; }},
         };
     return changes;

@@ -41,8 +41,14 @@ TEST(SampleRanges, MalformedTextIsRefused)
 
 TEST(SampleRanges, SeedsAreListedWithRunsShortened)
 {
-    EXPECT_EQ(film::describeSeeds({{3, 0, 1}, {1, 0, 1}, {2, 0, 1}, {4, 0, 1}, {7, 0, 1},
-                                     {9, 0, 1}, {10, 0, 1}, {1, 5, 1}}),
+    EXPECT_EQ(film::describeSeeds({{3, 0, 1},
+                                   {1, 0, 1},
+                                   {2, 0, 1},
+                                   {4, 0, 1},
+                                   {7, 0, 1},
+                                   {9, 0, 1},
+                                   {10, 0, 1},
+                                   {1, 5, 1}}),
               "1-4, 7, 9, 10");
 }
 

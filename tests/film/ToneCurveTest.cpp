@@ -13,8 +13,7 @@ TEST(ToneCurve, BlackIsZeroAndTheWhitePointIsOne)
     const double exposure = film::ToneCurve::kDefaultExposure;
     EXPECT_EQ(film::displayValue(0.0, exposure), 0.0);
     EXPECT_EQ(film::displayValue(-1.0, exposure), 0.0) << "negative radiance shows black";
-    EXPECT_NEAR(film::displayValue(film::ToneCurve::kWhitePoint / exposure, exposure), 1.0,
-                1e-12);
+    EXPECT_NEAR(film::displayValue(film::ToneCurve::kWhitePoint / exposure, exposure), 1.0, 1e-12);
     EXPECT_EQ(film::displayValue(1e6, exposure), 1.0) << "beyond white, clamped";
 }
 
@@ -47,8 +46,8 @@ TEST(ToneCurve, EveryCurveShowsBlackAsBlackGreyAsGreyAndGrowsWithRadiance)
         EXPECT_EQ(film::displayColour({0.0, 0.0, 0.0}, 4.0, choice.value)[0], 0.0) << choice.name;
         double previous = 0.0;
         for (double radiance = 0.001; radiance < 1000.0; radiance *= 1.5) {
-            const film::Rgb shown = film::displayColour({radiance, radiance, radiance}, 1.0,
-                                                        choice.value);
+            const film::Rgb shown =
+                film::displayColour({radiance, radiance, radiance}, 1.0, choice.value);
             // Within a quarter of an 8-bit step: AgX's published matrices keep a grey to 2e-4.
             EXPECT_NEAR(shown[0], shown[1], 1e-3) << choice.name << " at " << radiance;
             EXPECT_NEAR(shown[0], shown[2], 1e-3) << choice.name << " at " << radiance;

@@ -1,9 +1,9 @@
 // A render's file is untrusted (film/RenderFile.h, film/RenderFileChecks.h): each way a
 // file can be wrong that issue 35 found merged, resumed or described without a word
 // (support/CraftedRenderFiles.cpp) is refused, naming the first pixel and channel at fault.
-#include "io/OutputFiles.h"
 #include "film/RenderFile.h"
 #include "film/RenderFileChecks.h"
+#include "io/OutputFiles.h"
 #include "support/CraftedRenderFiles.h"
 
 #include <gtest/gtest.h>

@@ -4,11 +4,11 @@
 // bad input; anything else (a crash, a sanitizer report, another exception, an allocation
 // beyond libFuzzer's limit, a hang) is a finding, and so is a file accepted whose values break
 // what the readers promise: a count beyond the largest, or a merge of it that is not finite.
-#include "io/ImageFile.h"
 #include "film/Accumulation.h"
 #include "film/RenderFile.h"
 #include "film/RenderFileChecks.h"
 #include "film/RenderMetadata.h"
+#include "io/ImageFile.h"
 
 #include <cmath>
 #include <cstddef>
@@ -64,7 +64,8 @@ void readAsMergeAndResumeDo(const fs::path& file)
         std::abort();
     // A merge of it with itself (counts within the largest) is all finite.
     if (2 * static_cast<std::int64_t>(span.most) <= film::kLargestSampleCount) {
-        const film::Accumulation merged = film::combineAccumulations({&accumulation, &accumulation});
+        const film::Accumulation merged =
+            film::combineAccumulations({&accumulation, &accumulation});
         if (!allFinite(merged.estimate) || !allFinite(merged.moments))
             std::abort();
     }

@@ -2,13 +2,13 @@
 // either parse into a scene that the rest of the GL-free code accepts, or raise a SceneError;
 // anything else (a crash, a sanitizer report, another exception, a camera frame that is not
 // finite) is a finding. The shader generator runs on every scene that parses.
-#include "shadergen/SceneShaderGenerator.h"
 #include "scene/FileLookup.h"
 #include "scene/InvisibleObjects.h"
 #include "scene/SceneBounds.h"
 #include "scene/SceneError.h"
 #include "scene/SceneFeatures.h"
 #include "scene/SceneParser.h"
+#include "shadergen/SceneShaderGenerator.h"
 
 #include <cmath>
 #include <cstddef>
@@ -21,9 +21,9 @@ namespace {
 // Files a scene names are looked up as for the classic scenes, which sit in scenes/.
 const scene::FileLookup& lookup()
 {
-    static const scene::FileLookup classicScenes(
-        std::filesystem::path(RAYTRACER_SOURCE_DIR) / "scenes",
-        std::filesystem::path(RAYTRACER_SOURCE_DIR));
+    static const scene::FileLookup classicScenes(std::filesystem::path(RAYTRACER_SOURCE_DIR) /
+                                                     "scenes",
+                                                 std::filesystem::path(RAYTRACER_SOURCE_DIR));
     return classicScenes;
 }
 

@@ -101,8 +101,10 @@ solid 0 0 0
             bool allInUmbra = true;
             // The whole pixel must see umbra floor, not sphere and not lit floor.
             for (int corner = 0; corner < 4 && allInUmbra; ++corner) {
-                const double cu = (2.0 * (x + (corner & 1)) - request.width) / request.height * tanHalf;
-                const double cv = (2.0 * (glRow + (corner >> 1)) - request.height) / request.height * tanHalf;
+                const double cu =
+                    (2.0 * (x + (corner & 1)) - request.width) / request.height * tanHalf;
+                const double cv =
+                    (2.0 * (glRow + (corner >> 1)) - request.height) / request.height * tanHalf;
                 double d[3];
                 for (int i = 0; i < 3; ++i)
                     d[i] = cu * r[i] + cv * u[i] + f[i];
@@ -123,7 +125,8 @@ solid 0 0 0
                 }
                 // ...in the umbra: the line to the light passes inside the sphere with margin.
                 const double toLight[3] = {0.0 - p[0], 5.0, 0.0 - p[2]};
-                const double length = std::sqrt(toLight[0] * toLight[0] + 25.0 + toLight[2] * toLight[2]);
+                const double length =
+                    std::sqrt(toLight[0] * toLight[0] + 25.0 + toLight[2] * toLight[2]);
                 const double w[3] = {toLight[0] / length, toLight[1] / length, toLight[2] / length};
                 const double pc[3] = {0.0 - p[0], 1.0, 0.0 - p[2]};
                 const double along = pc[0] * w[0] + pc[1] * w[1] + pc[2] * w[2];
@@ -169,9 +172,11 @@ TEST(Contact, SphereRestingOnPlaneShowsNoAcneOnTheLitFloorAroundIt)
     text << "environment none\n"
          << camera.eye.x << " " << camera.eye.y << " " << camera.eye.z << "\n"
          << camera.target.x << " " << camera.target.y << " " << camera.target.z << "\n"
-         << "0 1 0\n" << camera.verticalFieldOfViewDegrees << "\n"
-         << "1\n" << light.x << " " << light.y << " " << light.z << "  " << kIntensity << " "
-         << kIntensity << " " << kIntensity << "\n"
+         << "0 1 0\n"
+         << camera.verticalFieldOfViewDegrees << "\n"
+         << "1\n"
+         << light.x << " " << light.y << " " << light.z << "  " << kIntensity << " " << kIntensity
+         << " " << kIntensity << "\n"
          << "2\nsolid " << kAlbedo << " " << kAlbedo << " " << kAlbedo << "\nsolid 0 0 0\n"
          << "1\n0 0 0  0 0 0 0\n"
          << "2\n0 0 polyhedron 1  0 1 0 0\n1 0 sphere 0 1 0 1\n";
@@ -195,7 +200,8 @@ TEST(Contact, SphereRestingOnPlaneShowsNoAcneOnTheLitFloorAroundIt)
     // Floor seen past the sphere (the line of sight misses it by the margin) and lit past it
     // (so does the line from the floor point to the light).
     auto litFloorClearOfSphere = [&](const glm::dvec3& direction) {
-        if (direction.y >= 0.0 || testing_support::distanceToRay(centre, eye, direction) < 1.0 + kMargin)
+        if (direction.y >= 0.0 ||
+            testing_support::distanceToRay(centre, eye, direction) < 1.0 + kMargin)
             return false;
         const glm::dvec3 p = floorPoint(direction);
         return testing_support::distanceToRay(centre, p, glm::normalize(light - p)) > 1.0 + kMargin;
@@ -215,7 +221,8 @@ TEST(Contact, SphereRestingOnPlaneShowsNoAcneOnTheLitFloorAroundIt)
                 ++nearContact;
             const double expected = pinhole.pixelAverage(x, y, 8, radiance);
             const double got = (output.radiance.at(x, y, 0) + output.radiance.at(x, y, 1) +
-                                output.radiance.at(x, y, 2)) / 3.0;
+                                output.radiance.at(x, y, 2)) /
+                               3.0;
             // 5 standard deviations of the pixel's own noise (the jitter across the pixel),
             // plus 0.2 % for the hit point's tolerance and float rounding. Within 2 of the
             // contact that is under 1 %: 3 samples in 256 lost to acne exceed it.

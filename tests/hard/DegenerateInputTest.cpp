@@ -30,8 +30,7 @@ void expectParseError(const std::string& text, int line, const std::string& toke
     } catch (const scene::SceneError& error) {
         EXPECT_EQ(error.line(), line) << error.what();
         EXPECT_EQ(error.token(), token) << error.what();
-        EXPECT_NE(std::string(error.what()).find(expectedPart), std::string::npos)
-            << error.what();
+        EXPECT_NE(std::string(error.what()).find(expectedPart), std::string::npos) << error.what();
     }
 }
 

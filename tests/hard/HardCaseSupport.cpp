@@ -2,9 +2,9 @@
 
 #include "platform/OsMesaContext.h"
 #include "render/ProgressiveRenderer.h"
-#include "shadergen/ShaderSource.h"
 #include "scene/FileLookup.h"
 #include "scene/SceneParser.h"
+#include "shadergen/ShaderSource.h"
 
 #include <cmath>
 #include <memory>
@@ -27,8 +27,7 @@ RenderOutput render(const RenderRequest& request)
 {
     context();
     const scene::FileLookup lookup(HARD_CASES_DIR, scene::FileLookup::dataDirectory());
-    const scene::Scene scene =
-        scene::parseSceneText(request.sceneText, "hard-case.in", lookup);
+    const scene::Scene scene = scene::parseSceneText(request.sceneText, "hard-case.in", lookup);
     render::ProgressiveRenderer renderer(scene, request.width, request.height, request.settings);
     while (renderer.samplesPerPixel() < request.samplesPerPixel)
         renderer.renderFrame({}, std::min(request.settings.samplesPerFrame,

@@ -9,14 +9,15 @@
 namespace {
 
 std::string floorUnder(const std::string& lights, const std::string& extraFinishes = "",
-                       const std::string& extraObjects = "", int objects = 1,
-                       int finishes = 1, int pigments = 1,
-                       const std::string& extraPigments = "")
+                       const std::string& extraObjects = "", int objects = 1, int finishes = 1,
+                       int pigments = 1, const std::string& extraPigments = "")
 {
     std::ostringstream text;
-    text << "environment none\n0 5 5\n0 0 0\n0 1 0\n45\n" << lights << pigments
-         << "\nsolid 0.5 0.5 0.5\n" << extraPigments << finishes << "\n0 0 0 0 0 0 0\n"
-         << extraFinishes << objects << "\n0 0 polyhedron 1 0 1 0 0\n" << extraObjects;
+    text << "environment none\n0 5 5\n0 0 0\n0 1 0\n45\n"
+         << lights << pigments << "\nsolid 0.5 0.5 0.5\n"
+         << extraPigments << finishes << "\n0 0 0 0 0 0 0\n"
+         << extraFinishes << objects << "\n0 0 polyhedron 1 0 1 0 0\n"
+         << extraObjects;
     return text.str();
 }
 
@@ -42,8 +43,8 @@ TEST(Lights, TinyDistantSphereLightMatchesEquivalentPointLight)
     std::ostringstream sphereObject;
     sphereObject << "1 1 sphere 0 100 0 " << radius << "\n";
     hard::RenderRequest sphere = point;
-    sphere.sceneText = floorUnder("0\n", sphereFinish.str(), sphereObject.str(), 2, 2, 2,
-                                  "solid 0 0 0\n");
+    sphere.sceneText =
+        floorUnder("0\n", sphereFinish.str(), sphereObject.str(), 2, 2, 2, "solid 0 0 0\n");
     sphere.settings.seed = 2;
 
     const hard::RenderOutput pointOutput = hard::render(point);
@@ -62,8 +63,8 @@ TEST(Lights, TinyDistantSphereLightMatchesEquivalentPointLight)
 TEST(Lights, RadianceNearTheFloatMaximumOnALargeSphereIsStillSampled)
 {
     auto floorUnderLight = [](const char* radiance) {
-        return floorUnder("0\n", std::string(radiance) + " " + radiance + " " + radiance +
-                                     " 0 0 0 0\n",
+        return floorUnder("0\n",
+                          std::string(radiance) + " " + radiance + " " + radiance + " 0 0 0 0\n",
                           "1 1 sphere 0 2 0 0.5\n", 2, 2, 2, "solid 0 0 0\n");
     };
     hard::RenderRequest dimmer;

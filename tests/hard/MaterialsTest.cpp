@@ -10,7 +10,8 @@ namespace {
 std::string furnaceSphere(const std::string& pigment, const std::string& finish)
 {
     std::ostringstream text;
-    text << "environment 1 1 1\n0 0 4\n0 0 0\n0 1 0\n40\n0\n1\n" << pigment << "\n1\n"
+    text << "environment 1 1 1\n0 0 4\n0 0 0\n0 1 0\n40\n0\n1\n"
+         << pigment << "\n1\n"
          << finish << "\n1\n0 0 sphere 0 0 0 1\n";
     return text.str();
 }
@@ -28,7 +29,8 @@ hard::RenderOutput renderFurnace(const std::string& pigment, const std::string& 
 // no pixel may exceed 1 beyond noise, whatever the exponent.
 void expectBlinnPhongBoundedByOne(const std::string& exponent)
 {
-    const hard::RenderOutput output = renderFurnace("solid 0.5 0.5 0.5", "0 0 0 " + exponent + " 0 0 0");
+    const hard::RenderOutput output =
+        renderFurnace("solid 0.5 0.5 0.5", "0 0 0 " + exponent + " 0 0 0");
     EXPECT_EQ(hard::nonFinitePixels(output.radiance), 0);
     EXPECT_EQ(output.discarded, 0u);
     for (int y = 0; y < output.radiance.height; ++y)

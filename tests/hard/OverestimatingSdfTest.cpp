@@ -15,7 +15,8 @@ namespace {
 std::string slabScene(const std::string& slab)
 {
     return "environment 1 1 1\n-3 0 0\n0 0 0\n0 1 0\n30\n0\n1\nsolid 0 0 0\n1\n0 0 0 0 0 0 0\n"
-           "1\n0 0 " + slab + " 0 0 0\n";
+           "1\n0 0 " +
+           slab + " 0 0 0\n";
 }
 
 double centreRadiance(const hard::RenderOutput& output, int half)

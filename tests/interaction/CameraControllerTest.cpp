@@ -220,10 +220,10 @@ TEST(CameraPivot, IsTheSurfaceUnderTheViewsCentreNotTheLookAtPointBehindTheWall)
 TEST(CameraPivot, WhereTheCentreMeetsNothingIsOnTheCentreRayNearestTheScenesMiddle)
 {
     // Looking over the floor at the sky: the ray meets no bound.
-    scene::Scene scene = scene::parseSceneText(
-        "0 1 0\n0 1 -1\n0 1 0\n45\n0\n1 solid 1 1 1\n1 0 0 0 0 0 0 0\n"
-        "2\n0 0 sphere 0 3 -10 1\n0 0 polyhedron 1 0 1 0 0\n",
-        "sky.in", scene::FileLookup(".", scene::FileLookup::dataDirectory()));
+    scene::Scene scene =
+        scene::parseSceneText("0 1 0\n0 1 -1\n0 1 0\n45\n0\n1 solid 1 1 1\n1 0 0 0 0 0 0 0\n"
+                              "2\n0 0 sphere 0 3 -10 1\n0 0 polyhedron 1 0 1 0 0\n",
+                              "sky.in", scene::FileLookup(".", scene::FileLookup::dataDirectory()));
     CameraController controller(scene.camera, scene);
     const glm::vec3 pivot = controller.pivot();
     const scene::SceneBounds bounds = scene::computeSceneBounds(scene);
@@ -246,9 +246,9 @@ TEST(CameraOrbit, AQuarterTurnInScene1KeepsTheEyeInTheRoomAndTheViewOnThePivot)
             controller.orbit({direction * 40.0f, 0.0f}, 480.0f);
         const scene::Camera& camera = controller.camera();
         EXPECT_EQ(depthInWalls(scene, camera.eye), 0.0f)
-            << "the eye went " << depthInWalls(scene, camera.eye)
-            << " into a wall, at " << camera.eye.x << " " << camera.eye.y << " "
-            << camera.eye.z << " (drag " << direction << ")";
+            << "the eye went " << depthInWalls(scene, camera.eye) << " into a wall, at "
+            << camera.eye.x << " " << camera.eye.y << " " << camera.eye.z << " (drag " << direction
+            << ")";
         EXPECT_LE(glm::length(camera.eye - bounds.center), bounds.radius)
             << "the eye left the scene's bounds";
         EXPECT_NEAR(glm::length(camera.target - pivot), 0.0f, 1e-4f)

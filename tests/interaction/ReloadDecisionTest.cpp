@@ -9,11 +9,11 @@ namespace interaction_tests {
 namespace {
 
 using render::decideReload;
+using render::ReloadDecision;
+using scene_tests::parse;
+using settings::ShaderVariant;
 using shadergen::EnvironmentBinding;
 using shadergen::generateSceneShaderCode;
-using render::ReloadDecision;
-using settings::ShaderVariant;
-using scene_tests::parse;
 namespace fs = std::filesystem;
 
 // Camera, a point light, a red and a grey pigment, two finishes, a sphere on a floor, with
@@ -23,11 +23,17 @@ std::string scene(const std::string& eye = "0 1 4", const std::string& colour = 
                   const std::string& sphere = "0 0 sphere 0 0.5 0  0.5",
                   const std::string& environment = "")
 {
-    return environment + eye + "\n0 0.5 0\n0 1 0\n45\n"
+    return environment + eye +
+           "\n0 0.5 0\n0 1 0\n45\n"
            "1\n2 5 3  40 40 40\n"
-           "2\nsolid " + colour + "\nsolid 0.5 0.5 0.5\n"
-           "2\n0 0 0  0 0 0 0\n" + secondFinish + "\n"
-           "2\n" + sphere + "\n1 0 polyhedron 1\n    0 1 0 0\n";
+           "2\nsolid " +
+           colour +
+           "\nsolid 0.5 0.5 0.5\n"
+           "2\n0 0 0  0 0 0 0\n" +
+           secondFinish +
+           "\n"
+           "2\n" +
+           sphere + "\n1 0 polyhedron 1\n    0 1 0 0\n";
 }
 
 ReloadDecision decide(const std::string& before, const std::string& after,
@@ -36,7 +42,8 @@ ReloadDecision decide(const std::string& before, const std::string& after,
 {
     const scene::Scene shown = parse(before);
     const scene::Scene edited = parse(after);
-    const auto shownCode = generateSceneShaderCode(shown, {ShaderVariant::Specialized, environment});
+    const auto shownCode =
+        generateSceneShaderCode(shown, {ShaderVariant::Specialized, environment});
     const auto editedCode =
         generateSceneShaderCode(edited, {ShaderVariant::Specialized, environment});
     return decideReload(shownCode, render::packSceneUniforms(shown, shownCode), editedCode,
@@ -61,17 +68,17 @@ TEST(ReloadDecision, PositionsSizesAndTheCameraAreValues)
 
 TEST(ReloadDecision, AnotherShapeIsStructure)
 {
-    EXPECT_TRUE(
-        decide(scene(), scene("0 1 4", "0.8 0.1 0.1", "0 0 0  0 0 0 0", "0 0 box 0 0.5 0  0.5 0.5 0.5"))
-            .rebuildShader);
+    EXPECT_TRUE(decide(scene(), scene("0 1 4", "0.8 0.1 0.1", "0 0 0  0 0 0 0",
+                                      "0 0 box 0 0.5 0  0.5 0.5 0.5"))
+                    .rebuildShader);
 }
 
 TEST(ReloadDecision, AMaterialOfAnotherKindIsStructure)
 {
     // The sphere's finish made a mirror: the shader gains the mirror's code.
-    EXPECT_TRUE(decide(scene(), scene("0 1 4", "0.8 0.1 0.1", "0 0 0  0 1 0 0",
-                                      "1 1 sphere 0 0.5 0  0.5"))
-                    .rebuildShader);
+    EXPECT_TRUE(
+        decide(scene(), scene("0 1 4", "0.8 0.1 0.1", "0 0 0  0 1 0 0", "1 1 sphere 0 0.5 0  0.5"))
+            .rebuildShader);
 }
 
 TEST(ReloadDecision, TheEnvironmentIsStructureOnlyWhenBuiltIn)
@@ -119,10 +126,9 @@ TEST(ReloadDecision, AnEditedEnvironmentMapReloadsTexturesAndItsIntensityIsAValu
     const ReloadDecision edited = decide(withMap(""), withMap(""), {map});
     EXPECT_TRUE(edited.reloadTextures);
     EXPECT_FALSE(edited.rebuildShader);
-    const ReloadDecision replaced = decide(withMap(""), scene("0 1 4", "0.8 0.1 0.1",
-                                                              "0 0 0  0 0 0 0",
-                                                              "0 0 sphere 0 0.5 0  0.5",
-                                                              "environment map octants.exr\n"));
+    const ReloadDecision replaced =
+        decide(withMap(""), scene("0 1 4", "0.8 0.1 0.1", "0 0 0  0 0 0 0",
+                                  "0 0 sphere 0 0.5 0  0.5", "environment map octants.exr\n"));
     EXPECT_TRUE(replaced.reloadTextures);
     const ReloadDecision turned = decide(withMap(""), withMap("intensity 2 rotate 30"));
     EXPECT_FALSE(turned.reloadTextures);
@@ -145,9 +151,9 @@ TEST(ReloadDecision, AnyChangeOfValueCodeOrFileIsAChange)
 {
     EXPECT_FALSE(decide(scene(), scene("0 1 4", "0.1 0.1 0.8")).changesNothing) << "a colour";
     EXPECT_FALSE(decide(scene(), scene("0 1 5")).changesNothing) << "the camera";
-    EXPECT_FALSE(decide(scene(), scene("0 1 4", "0.8 0.1 0.1", "0 0 0  0 0 0 0",
-                                       "0 0 sphere 0 0.5 0  0.6"))
-                     .changesNothing)
+    EXPECT_FALSE(
+        decide(scene(), scene("0 1 4", "0.8 0.1 0.1", "0 0 0  0 0 0 0", "0 0 sphere 0 0.5 0  0.6"))
+            .changesNothing)
         << "a radius";
     EXPECT_FALSE(decide(scene(), scene("0 1 4", "0.8 0.1 0.1", "0 0 0  0 0 0 0",
                                        "0 0 box 0 0.5 0  0.5 0.5 0.5"))
@@ -184,8 +190,8 @@ TEST(ReloadDecision, ALensEditedIsTheCameraChanged)
         text.replace(text.find("45\n"), 3, "45 " + lens + "\n");
         return text;
     };
-    EXPECT_TRUE(render::cameraLinesChanged(parse(scene()).camera,
-                                           parse(withLens("lens 0.1 4")).camera));
+    EXPECT_TRUE(
+        render::cameraLinesChanged(parse(scene()).camera, parse(withLens("lens 0.1 4")).camera));
     EXPECT_TRUE(render::cameraLinesChanged(parse(withLens("lens 0.1 4")).camera,
                                            parse(withLens("lens 0.2 4")).camera));
     EXPECT_FALSE(render::cameraLinesChanged(parse(withLens("lens 0.1 4")).camera,

@@ -1,11 +1,11 @@
 // The window session's parts that need no window: which files it watches and how it sees
 // them change, how it paces frames and previews, what it names saved images, and the history
 // behind the convergence plot.
+#include "app/SceneLoading.h"
+#include "app/Snapshot.h"
 #include "interaction/ConvergenceHistory.h"
 #include "interaction/FileWatcher.h"
 #include "interaction/FramePacing.h"
-#include "app/SceneLoading.h"
-#include "app/Snapshot.h"
 #include "scene/SceneTestSupport.h"
 
 #include <gtest/gtest.h>
@@ -99,10 +99,9 @@ TEST_F(FileWatcherTest, NewBytesOfTheSameSizeAreAChange)
 
 TEST(SceneFiles, AreTheSceneItsUserSdfFilesItsTexturesAndItsEnvironmentMap)
 {
-    const std::string text =
-        "environment map sky-sun.hdr\n0 1 4\n0 0 0\n0 1 0\n45\n0\n"
-        "2\ntexmap brick.ppm 1\nsolid 1 1 1\n1\n0 0 0  0 0 0 0\n"
-        "2\n0 0 twisted_bar 0 0.4 0\n1 0 sphere 0 0 0 1\n";
+    const std::string text = "environment map sky-sun.hdr\n0 1 4\n0 0 0\n0 1 0\n45\n0\n"
+                             "2\ntexmap brick.ppm 1\nsolid 1 1 1\n1\n0 0 0  0 0 0 0\n"
+                             "2\n0 0 twisted_bar 0 0.4 0\n1 0 sphere 0 0 0 1\n";
     const std::vector<fs::path> files = app::filesOfScene("my.in", scene_tests::parse(text));
     ASSERT_EQ(files.size(), 4u);
     EXPECT_EQ(files[0], fs::path("my.in"));
@@ -179,7 +178,8 @@ TEST(FramePacing, ThePreviewGridCoarsensWhenSlowAndRefinesWhenFast)
     EXPECT_EQ(interaction::nextPreviewDivisor(3, 0.01), 2);
     EXPECT_EQ(interaction::nextPreviewDivisor(3, 0.05), 3) << "inside the band it stays";
     EXPECT_EQ(interaction::nextPreviewDivisor(1, 0.001), 1);
-    EXPECT_EQ(interaction::nextPreviewDivisor(interaction::kMaxPreviewDivisor, 5.0), interaction::kMaxPreviewDivisor);
+    EXPECT_EQ(interaction::nextPreviewDivisor(interaction::kMaxPreviewDivisor, 5.0),
+              interaction::kMaxPreviewDivisor);
 }
 
 TEST(FramePacing, TheFirstPreviewGridFollowsTheCostOfAFullSample)

@@ -109,8 +109,7 @@ TEST_P(FullDisk, AWriteThatFitsIsComplete)
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryFormat, FullDisk,
-                         ::testing::Values(".ppm", ".png", ".jpg", ".tif", ".exr", ".pfm",
-                                           ".hdr"),
+                         ::testing::Values(".ppm", ".png", ".jpg", ".tif", ".exr", ".pfm", ".hdr"),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                              return info.param.substr(1);
                          });

@@ -1,16 +1,16 @@
 // The output files' promise (io/OutputFiles.h): checked before any work, written all or none,
 // never two into one file, never a temporary name in a message.
-#include "io/ImageFile.h"
 #include "io/OutputFiles.h"
+#include "io/ImageFile.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <fstream>
 #include <random>
-#include <csignal>
 #include <sstream>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -68,8 +68,7 @@ TEST_F(OutputFiles, EveryDocumentedFormatPassesTheCheck)
 {
     for (const char* name : {"a.ppm", "a.png", "a.jpg", "a.jpeg", "a.tif", "a.tiff", "a.exr",
                              "a.pfm", "a.hdr", "A.EXR"})
-        EXPECT_EQ(messageOfCheck({{folder_ / name, io::OutputKind::Image}}), "(accepted)")
-            << name;
+        EXPECT_EQ(messageOfCheck({{folder_ / name, io::OutputKind::Image}}), "(accepted)") << name;
 }
 
 TEST_F(OutputFiles, AMissingFolderIsRefusedWithTheReasonAndTheUsersPath)
@@ -85,9 +84,9 @@ TEST_F(OutputFiles, StatisticsOnlyInThirtyTwoBitFloatFormats)
     EXPECT_EQ(messageOfCheck({{folder_ / "s.exr", io::OutputKind::Statistics}}), "(accepted)");
     EXPECT_EQ(messageOfCheck({{folder_ / "s.pfm", io::OutputKind::Statistics}}), "(accepted)");
     for (const char* name : {"s.png", "s.hdr", "s.ppm"})
-        EXPECT_NE(messageOfCheck({{folder_ / name, io::OutputKind::Statistics}})
-                      .find("32-bit float"),
-                  std::string::npos)
+        EXPECT_NE(
+            messageOfCheck({{folder_ / name, io::OutputKind::Statistics}}).find("32-bit float"),
+            std::string::npos)
             << name;
 }
 
@@ -111,8 +110,8 @@ TEST_F(OutputFiles, WhenTheSecondImageFailsNeitherIsWrittenAndTheOlderFileIsKept
     std::ofstream(folder_ / "a.exr") << "older";
     const io::Image good = gradient(3);
     const io::Image twoChannels = gradient(2);  // PFM holds one or three channels
-    EXPECT_THROW(io::writeAllOrNothing({{folder_ / "a.exr", good, {}, {}},
-                                        {folder_ / "b.pfm", twoChannels, {}, {}}}),
+    EXPECT_THROW(io::writeAllOrNothing(
+                     {{folder_ / "a.exr", good, {}, {}}, {folder_ / "b.pfm", twoChannels, {}, {}}}),
                  std::runtime_error);
     EXPECT_EQ(contents(folder_ / "a.exr"), "older");
     EXPECT_EQ(files(), std::vector<std::string>{"a.exr"}) << "no temporary file is left";
@@ -121,8 +120,7 @@ TEST_F(OutputFiles, WhenTheSecondImageFailsNeitherIsWrittenAndTheOlderFileIsKept
 TEST_F(OutputFiles, BothImagesAreWrittenWhenBothSucceed)
 {
     const io::Image image = gradient(3);
-    io::writeAllOrNothing(
-        {{folder_ / "a.exr", image, {}, {}}, {folder_ / "b.pfm", image, {}, {}}});
+    io::writeAllOrNothing({{folder_ / "a.exr", image, {}, {}}, {folder_ / "b.pfm", image, {}, {}}});
     EXPECT_EQ(files(), (std::vector<std::string>{"a.exr", "b.pfm"}));
     EXPECT_EQ(io::readImage(folder_ / "a.exr").pixels, image.pixels);
     EXPECT_EQ(io::readImage(folder_ / "b.pfm").pixels, image.pixels);
@@ -178,14 +176,15 @@ TEST_F(OutputFiles, ChannelNamesAndAttributesComeBackFromAnExrAsWritten)
     for (const std::string& name : names) {
         const int index = file.channelIndex(name);
         ASSERT_GE(index, 0) << "no channel " << name;
-        const int written = static_cast<int>(
-            std::find(names.begin(), names.end(), name) - names.begin());
+        const int written =
+            static_cast<int>(std::find(names.begin(), names.end(), name) - names.begin());
         for (int y = 0; y < image.height; ++y)
             for (int x = 0; x < image.width; ++x)
                 EXPECT_EQ(file.image.at(x, y, index), image.at(x, y, written)) << name;
     }
-    const auto note = std::find_if(file.attributes.begin(), file.attributes.end(),
-                                   [](const io::ImageAttribute& a) { return a.name == "raytracer:note"; });
+    const auto note =
+        std::find_if(file.attributes.begin(), file.attributes.end(),
+                     [](const io::ImageAttribute& a) { return a.name == "raytracer:note"; });
     ASSERT_NE(note, file.attributes.end());
     EXPECT_EQ(note->value, "a test");
 }
@@ -215,9 +214,11 @@ TEST_F(OutputFiles, TemporariesOfTheDestinationWhoseProcessEndedAreRemoved)
     const std::string host = thisHost();
     const std::string endedHere = ".out.partial-" + host + "-" + std::to_string(ended) + "-0.exr";
     const std::string earlierName = ".out.partial-" + std::to_string(ended) + "-1.exr";
-    const std::string running = ".out.partial-" + host + "-" + std::to_string(::getppid()) + "-0.exr";
+    const std::string running =
+        ".out.partial-" + host + "-" + std::to_string(::getppid()) + "-0.exr";
     const std::string otherMachine = ".out.partial-elsewhere-" + std::to_string(ended) + "-0.exr";
-    const std::string otherOutput = ".other.partial-" + host + "-" + std::to_string(ended) + "-0.exr";
+    const std::string otherOutput =
+        ".other.partial-" + host + "-" + std::to_string(ended) + "-0.exr";
     const std::string otherFormat = ".out.partial-" + host + "-" + std::to_string(ended) + "-0.png";
     for (const std::string& name :
          {endedHere, earlierName, running, otherMachine, otherOutput, otherFormat})

@@ -17,8 +17,7 @@ std::string digestOf(const std::string& message)
 
 TEST(Sha256, OneBlockMessageMatchesFips180Vector)
 {
-    EXPECT_EQ(digestOf("abc"),
-              "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+    EXPECT_EQ(digestOf("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
 }
 
 TEST(Sha256, TwoBlockMessageMatchesFips180Vector)

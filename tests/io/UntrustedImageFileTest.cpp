@@ -35,8 +35,8 @@ protected:
         } catch (const std::runtime_error& error) {
             message = error.what();
         }
-        return {message, std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-                             .count()};
+        return {message,
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()};
     }
 
     fs::path folder_;
@@ -78,8 +78,7 @@ TEST_F(UntrustedImageFile, AFileIsReadOnlyAsTheFormatItsExtensionNames)
     io::writeImage(folder_ / "picture.png", image);
     fs::copy_file(folder_ / "picture.png", folder_ / "picture.exr");
     const auto [message, seconds] = refusalOf(folder_ / "picture.exr");
-    EXPECT_NE(message.find("picture.exr: not a readable exr file"), std::string::npos)
-        << message;
+    EXPECT_NE(message.find("picture.exr: not a readable exr file"), std::string::npos) << message;
 }
 
 // Read in bands of rows (so that memory follows the pixels the file holds): every row comes

@@ -34,13 +34,12 @@ int main(int argc, char** argv)
         }
         const platform::OsMesaContext context;
         const auto start = std::chrono::steady_clock::now();
-        const RenderedImage image =
-            renderScene(loadScene(scenePath(*regressionCase)), regressionCase->width,
-                        regressionCase->height, regressionCase->referenceSamplesPerPixel,
-                        settingsWithSeed(kReferenceSeed));
-        writeReference(argv[2], image,
-                       {regressionCase->scene, regressionCase->referenceSamplesPerPixel,
-                        kReferenceSeed});
+        const RenderedImage image = renderScene(
+            loadScene(scenePath(*regressionCase)), regressionCase->width, regressionCase->height,
+            regressionCase->referenceSamplesPerPixel, settingsWithSeed(kReferenceSeed));
+        writeReference(
+            argv[2], image,
+            {regressionCase->scene, regressionCase->referenceSamplesPerPixel, kReferenceSeed});
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::printf("%s: %dx%d, %d spp, seed %llu, %.1f s, %llu samples discarded -> %s\n",

@@ -43,9 +43,9 @@ void expectAgreesWithReference(const RegressionCase& regressionCase,
 
     if (comparison.passed())
         return;
-    const auto picture = writeSideBySide(
-        failureDirectory() / (regressionCase.name + "-" + label + ".png"), reference, render,
-        comparison, ComparisonSettings{}.blockSize);
+    const auto picture =
+        writeSideBySide(failureDirectory() / (regressionCase.name + "-" + label + ".png"),
+                        reference, render, comparison, ComparisonSettings{}.blockSize);
     ADD_FAILURE() << regressionCase.feature << ": the render (" << label << " shader, "
                   << regressionCase.testSamplesPerPixel << " spp, seed " << settings.seed
                   << ") is expected to agree with " << referencePath(regressionCase).string()
@@ -66,8 +66,7 @@ TEST_P(ImageRegression, RenderAgreesWithReference)
     expectAgreesWithReference(GetParam(), settingsWithSeed(kTestSeed), "specialized");
 }
 
-INSTANTIATE_TEST_SUITE_P(Case, ImageRegression, ::testing::ValuesIn(regressionCases()),
-                         caseName);
+INSTANTIATE_TEST_SUITE_P(Case, ImageRegression, ::testing::ValuesIn(regressionCases()), caseName);
 
 // The general shader (every feature, shapes interpreted from uniforms) must converge to the
 // same image as the specialised one the references were made with. It runs many times

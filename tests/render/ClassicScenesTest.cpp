@@ -16,8 +16,7 @@ class ClassicScene : public ::testing::TestWithParam<int> {};
 
 TEST_P(ClassicScene, RendersWithoutNanOrInfiniteSamples)
 {
-    const auto path =
-        sourceDirectory() / "scenes" / ("scene" + std::to_string(GetParam()) + ".in");
+    const auto path = sourceDirectory() / "scenes" / ("scene" + std::to_string(GetParam()) + ".in");
     const RenderedImage image = renderScene(loadScene(path), 64, 48, 8, settingsWithSeed(1));
     EXPECT_EQ(image.discardedSamples, 0u)
         << path.string() << ": samples discarded as NaN, infinite or negative at 64x48, 8 spp";

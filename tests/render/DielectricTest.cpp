@@ -64,8 +64,7 @@ Agreement agreementWith(const RenderedImage& image, const PinholeCamera& camera,
             ++agreement.pixels;
             const double expected = camera.pixelAverage(x, y, 16, expectedRadiance);
             const double render = channelMean(image.radiance, x, y);
-            const double allowance =
-                5.0 * std::sqrt(image.varianceOfMean(x, y)) + 2e-3 * expected;
+            const double allowance = 5.0 * std::sqrt(image.varianceOfMean(x, y)) + 2e-3 * expected;
             const double off = std::abs(render - expected) / allowance;
             if (off > agreement.worst)
                 agreement = {agreement.pixels, off, x, y, render, expected};

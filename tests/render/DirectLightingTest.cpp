@@ -51,8 +51,8 @@ struct PixelAgreement {
 // Each compared pixel may be off by 5 of its standard deviations (noise) plus `relative`
 // of its value (the hit point's tolerance, float rounding, the quadrature of the pixel).
 template <typename Expected, typename Select>
-PixelAgreement compareWithClosedForm(const RenderedImage& image, double relative,
-                                     Expected expected, Select select)
+PixelAgreement compareWithClosedForm(const RenderedImage& image, double relative, Expected expected,
+                                     Select select)
 {
     PixelAgreement agreement;
     for (int y = 0; y < image.height(); ++y)
@@ -82,9 +82,9 @@ TEST(PointLight, LambertianPlaneMatchesInverseSquareCosineLaw)
 {
     const glm::dvec3 light(0.5, 1.0, -0.3);
     const double intensity = 2.0;
-    const scene::Scene scene = sceneFromText(
-        std::string(kCameraAndNoEnvironment) + "1\n0.5 1 -0.3  2 2 2\n1 solid 0.8 0.8 0.8\n"
-        "1 0 0 0  0 0 0 0\n1\n0 0 polyhedron 1  0 1 0 0\n");
+    const scene::Scene scene = sceneFromText(std::string(kCameraAndNoEnvironment) +
+                                             "1\n0.5 1 -0.3  2 2 2\n1 solid 0.8 0.8 0.8\n"
+                                             "1 0 0 0  0 0 0 0\n1\n0 0 polyhedron 1  0 1 0 0\n");
     // 256 samples: the irradiance changes by up to 12% across a pixel near the light, so
     // the jitter alone gives each pixel about 0.2% of noise at this count.
     const RenderedImage image = renderScene(scene, kWidth, kHeight, 256, settingsWithSeed(11));
@@ -98,11 +98,10 @@ TEST(PointLight, LambertianPlaneMatchesInverseSquareCosineLaw)
         return kAlbedo / kPi * intensity * cosine / (distance * distance);
     };
     const PixelAgreement agreement = compareWithClosedForm(
-        image, 2e-3,
-        [&](int x, int y) { return camera.pixelAverage(x, y, 16, radiance); },
+        image, 2e-3, [&](int x, int y) { return camera.pixelAverage(x, y, 16, radiance); },
         [](int, int) { return true; });
-    EXPECT_LE(agreement.worstZ, 1.0) << "rho/pi I cos(theta)/d^2 per pixel: "
-                                     << agreement.describe();
+    EXPECT_LE(agreement.worstZ, 1.0)
+        << "rho/pi I cos(theta)/d^2 per pixel: " << agreement.describe();
     EXPECT_LT(agreement.worstRelativeError, 0.01) << agreement.describe();
 }
 
@@ -118,10 +117,10 @@ TEST_P(SphereLight, LambertianPlaneMatchesAnalyticIrradianceOfASphere)
     const double radius = 0.2;
     const double emitted = 5.0;
     // The light's pigment is black: it emits and reflects nothing.
-    const scene::Scene scene = sceneFromText(
-        std::string(kCameraAndNoEnvironment) +
-        "0\n2\nsolid 0.8 0.8 0.8\nsolid 0 0 0\n2\n0 0 0  0 0 0 0\n5 5 5  0 0 0 0\n2\n"
-        "0 0 polyhedron 1  0 1 0 0\n1 1 sphere 0.3 1.2 -0.2 0.2\n");
+    const scene::Scene scene =
+        sceneFromText(std::string(kCameraAndNoEnvironment) +
+                      "0\n2\nsolid 0.8 0.8 0.8\nsolid 0 0 0\n2\n0 0 0  0 0 0 0\n5 5 5  0 0 0 0\n2\n"
+                      "0 0 polyhedron 1  0 1 0 0\n1 1 sphere 0.3 1.2 -0.2 0.2\n");
     settings::RenderSettings settings = settingsWithSeed(13);
     settings.multipleImportanceSampling = multipleImportanceSampling;
     const RenderedImage image = renderScene(scene, kWidth, kHeight, 64, settings);

@@ -101,8 +101,8 @@ PixelMask boundaryPixels(const PinholeCamera& camera, const std::function<int(gl
 struct EdgeComparison {
     int pixels = 0;
     int blocks = 0;
-    double squaredBias = 0.0;      // sum over blocks of D1 D2
-    double squaredNoise = 0.0;     // sum over blocks of the render's variance
+    double squaredBias = 0.0;       // sum over blocks of D1 D2
+    double squaredNoise = 0.0;      // sum over blocks of the render's variance
     double meanRelativeBias = 0.0;  // signed, over the feature: sum (D1 + D2) / 2 / sum exact
     double biasOverNoise() const
     {
@@ -113,8 +113,8 @@ struct EdgeComparison {
         std::ostringstream text;
         text << pixels << " pixels in " << blocks << " blocks: bias / noise = " << biasOverNoise()
              << " (squared bias " << squaredBias << ", squared noise " << squaredNoise
-             << "); over the feature the default render is off by "
-             << 100.0 * meanRelativeBias << " % on average";
+             << "); over the feature the default render is off by " << 100.0 * meanRelativeBias
+             << " % on average";
         return text.str();
     }
 };
@@ -168,16 +168,15 @@ RenderedImage renderWithOtherProgram(const std::string& program, const std::stri
 {
     const std::filesystem::path folder =
         std::filesystem::temp_directory_path() /
-        ("edge-bias-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-         "-" + std::to_string(seed));
+        ("edge-bias-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
+         std::to_string(seed));
     std::filesystem::create_directories(folder);
     std::ofstream(folder / "scene.in") << sceneText;
-    const std::string command = "'" + program + "' '" + (folder / "scene.in").string() + "' " +
-                                std::to_string(kWidth) + " " + std::to_string(kHeight) +
-                                " --headless --quiet --spp " + std::to_string(kSamples) +
-                                " --seed " + std::to_string(seed) + " --output '" +
-                                (folder / "image.exr").string() + "' --stats-output '" +
-                                (folder / "statistics.exr").string() + "'";
+    const std::string command =
+        "'" + program + "' '" + (folder / "scene.in").string() + "' " + std::to_string(kWidth) +
+        " " + std::to_string(kHeight) + " --headless --quiet --spp " + std::to_string(kSamples) +
+        " --seed " + std::to_string(seed) + " --output '" + (folder / "image.exr").string() +
+        "' --stats-output '" + (folder / "statistics.exr").string() + "'";
     if (std::system(command.c_str()) != 0)
         throw std::runtime_error("failed: " + command);
     RenderedImage image;
@@ -218,13 +217,13 @@ RenderPair renderPair(const std::string& sceneText, std::uint64_t seed,
 void expectMatchesExactGeometry(const std::string& sceneText, const PixelMask& mask,
                                 const std::string& feature, const MarchSettings& march = {})
 {
-    const EdgeComparison comparison = compareOnMask(renderPair(sceneText, 11, march),
-                                                    renderPair(sceneText, 12, march), mask);
+    const EdgeComparison comparison =
+        compareOnMask(renderPair(sceneText, 11, march), renderPair(sceneText, 12, march), mask);
     std::cout << feature << ": " << comparison.describe() << "\n";
     ASSERT_GE(comparison.blocks, 12) << feature << ": too few pixels to judge";
     EXPECT_LT(comparison.biasOverNoise(), 0.5)
-        << feature << " differs from exact intersection by more than half the noise of "
-        << kSamples << " samples: " << comparison.describe();
+        << feature << " differs from exact intersection by more than half the noise of " << kSamples
+        << " samples: " << comparison.describe();
 }
 
 // A closed room (walls of three colours) seen from inside; the camera looks at -z.
@@ -267,7 +266,7 @@ TEST(EdgeBias, DiffuseBoxSilhouetteAgainstABrighterWallMatchesExactIntersection)
 // Which wall of the room of kRoomObjects a ray from the eye meets first.
 int roomWall(const glm::dvec3& eye, const glm::dvec3& d)
 {
-    const glm::dvec4 planes[] = {{0, 1, 0, 2}, {0, -1, 0, 2}, {0, 0, 1, 2},
+    const glm::dvec4 planes[] = {{0, 1, 0, 2},  {0, -1, 0, 2}, {0, 0, 1, 2},
                                  {0, 0, -1, 5}, {1, 0, 0, 2},  {-1, 0, 0, 2}};
     int nearest = -1;
     double best = 1e30;
@@ -452,19 +451,19 @@ PixelMask creasePixels(const PinholeCamera& camera, const Solid& solid, double h
 // A reddish solid on a grey floor in the open, under the sky and the given point lights.
 std::string solidOnAFloorInTheOpen(const std::string& pointLights, const std::string& solid)
 {
-    return std::string("environment sky\n") + "0 1.5 3.4\n0 0.35 0\n0 1 0\n40\n" +
-           pointLights + "2\nsolid 0.8 0.8 0.8\nsolid 0.8 0.35 0.25\n1\n0 0 0 0 0 0 0\n" +
+    return std::string("environment sky\n") + "0 1.5 3.4\n0 0.35 0\n0 1 0\n40\n" + pointLights +
+           "2\nsolid 0.8 0.8 0.8\nsolid 0.8 0.35 0.25\n1\n0 0 0 0 0 0 0\n" +
            "2\n0 0 polyhedron 1  0 1 0 0\n1 0 " + solid + "\n";
 }
 
 TEST(EdgeBias, CreaseOfAMarchedCsgDifferenceOnAFloorMatchesExactIntersection)
 {
     const glm::dmat3 turn(glm::rotate(glm::dmat4(1.0), glm::radians(25.0), glm::dvec3(0, 1, 0)));
-    const std::string scene =
-        solidOnAFloorInTheOpen("1\n2.5 4 3  15 15 15\n",
-                               std::string("rotate 0 1 0 25 ") + DrilledScoopedBox::kShape);
+    const std::string scene = solidOnAFloorInTheOpen(
+        "1\n2.5 4 3  15 15 15\n", std::string("rotate 0 1 0 25 ") + DrilledScoopedBox::kShape);
     const PinholeCamera camera(sceneFromText(scene).camera, kWidth, kHeight);
-    expectMatchesExactGeometry(scene, creasePixels(camera, DrilledScoopedBox{glm::transpose(turn)}, 0.05),
+    expectMatchesExactGeometry(scene,
+                               creasePixels(camera, DrilledScoopedBox{glm::transpose(turn)}, 0.05),
                                "the crease where a CSG difference stands on the floor");
 }
 
@@ -478,9 +477,8 @@ struct ScaledRoundedCube {
     }
 };
 
-const char* const kRoundedCubeOnTheFloor =
-    "translate 0 0.7 0 rotate 0 1 0 -35 scale 0.7 "
-    "intersection { sphere 0 0 0 1.3  box 0 0 0 1 1 1 }";
+const char* const kRoundedCubeOnTheFloor = "translate 0 0.7 0 rotate 0 1 0 -35 scale 0.7 "
+                                           "intersection { sphere 0 0 0 1.3  box 0 0 0 1 1 1 }";
 
 ScaledRoundedCube roundedCubeOnTheFloor()
 {

@@ -52,7 +52,8 @@ TEST(EnvironmentMapDistribution, AConstantMapIsSampledUniformlyOverTheSphere)
 // Each texel's probability is its density times its solid angle, and they add up to 1.
 TEST(EnvironmentMapDistribution, DensitiesAreTheProbabilitiesOverTheSolidAngles)
 {
-    const render::EnvironmentMap map = render::buildEnvironmentMap(skyWithSunEnvironmentMap(64, 32));
+    const render::EnvironmentMap map =
+        render::buildEnvironmentMap(skyWithSunEnvironmentMap(64, 32));
     EXPECT_NEAR(totalProbability(map), 1.0, 1e-6);
     double total = 0.0;
     for (int row = 0; row < map.height; ++row)
@@ -84,10 +85,9 @@ TEST(EnvironmentMapDistribution, ABrightTexelAndTheNeighboursTheFilterLightsHold
             const int dr = row - kRow;
             const int dc = (column - kColumn + map.width + 1) % map.width - 1;
             const bool neighbour = std::abs(dr) <= 1 && std::abs(dc) <= 1;
-            const double expected =
-                neighbour ? weights[dr + 1] * weights[dc + 1] * map.texelSolidAngle(row) /
-                                expectedTotal
-                          : 0.0;
+            const double expected = neighbour ? weights[dr + 1] * weights[dc + 1] *
+                                                    map.texelSolidAngle(row) / expectedTotal
+                                              : 0.0;
             EXPECT_NEAR(map.texelProbability(column, row), expected, 1e-6)
                 << "texel (" << column << ", " << row << ")";
         }
@@ -135,9 +135,8 @@ TEST(EnvironmentMapFile, OpenExrAndRadianceHdrReadAlike)
     for (std::size_t i = 0; i < fromExr.texels.size(); ++i)
         // RGBE keeps 8 bits of mantissa per channel beside a shared exponent: within 1 % of
         // the brightest channel.
-        ASSERT_NEAR(fromHdr.texels[i], fromExr.texels[i], 0.01 * fromExr.texels[i - i % 4] +
-                                                              0.01 * fromExr.texels[i - i % 4 + 1] +
-                                                              1e-6)
+        ASSERT_NEAR(fromHdr.texels[i], fromExr.texels[i],
+                    0.01 * fromExr.texels[i - i % 4] + 0.01 * fromExr.texels[i - i % 4 + 1] + 1e-6)
             << "value " << i;
 }
 
@@ -169,8 +168,8 @@ TEST(EnvironmentMapFile, AnUnreadableMapIsASceneErrorWithFileLineAndTheLibrarysR
     }
     const std::string message = errorOf(sceneWithMap(garbage.string()));
     std::filesystem::remove(garbage);
-    EXPECT_EQ(message.rfind("written-in-test.in:11: environment map '" + garbage.string() + "': ", 0),
-              0u)
+    EXPECT_EQ(
+        message.rfind("written-in-test.in:11: environment map '" + garbage.string() + "': ", 0), 0u)
         << message;
     EXPECT_NE(message.find("is not an OpenEXR file"), std::string::npos)
         << "the library's reason: " << message;

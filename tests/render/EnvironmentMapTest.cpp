@@ -85,9 +85,9 @@ class EnvironmentMapFurnace : public ::testing::TestWithParam<int> {};
 TEST_P(EnvironmentMapFurnace, WhiteLambertianSphereVanishes)
 {
     const TemporaryImageFile map(constantEnvironmentMap(32, 16, glm::vec3(1.0f)), ".exr");
-    const scene::Scene scene = sceneFromText(mapLine(map) +
-                                             "0 0 4\n0 0 0\n0 1 0\n40\n0\n1 solid 1 1 1\n"
-                                             "1\n0 0 0 0 0 0 0\n1\n0 0 sphere 0 0 0 1\n");
+    const scene::Scene scene =
+        sceneFromText(mapLine(map) + "0 0 4\n0 0 0\n0 1 0\n40\n0\n1 solid 1 1 1\n"
+                                     "1\n0 0 0 0 0 0 0\n1\n0 0 sphere 0 0 0 1\n");
     settings::RenderSettings settings = settingsWithSeed(7);
     settings.switchableEnvironment = GetParam() == 1;
     const RenderedImage image = renderScene(scene, 64, 48, 32, settings);
@@ -99,7 +99,8 @@ TEST_P(EnvironmentMapFurnace, WhiteLambertianSphereVanishes)
     });
     ASSERT_GT(sphere.pixels, 300);
     std::cout << "white sphere under a map of radiance 1: " << sphere.describe() << "\n";
-    EXPECT_LT(sphere.worstZ, 5.0) << "every pixel of the sphere should read 1; " << sphere.describe();
+    EXPECT_LT(sphere.worstZ, 5.0) << "every pixel of the sphere should read 1; "
+                                  << sphere.describe();
     EXPECT_NEAR(sphere.mean, 1.0, 4.0 * sphere.meanStandardError + 1e-4) << sphere.describe();
     EXPECT_EQ(image.discardedSamples, 0u);
     const Agreement background = agreementWith(image, 1.0, [&](int x, int y) {
@@ -139,8 +140,8 @@ TEST_P(SmallPatch, PlaneMatchesTheClosedFormOfTheEquivalentSmallDistantLight)
     constexpr int kFirstRow = 31;  // theta from 43.6 to 45 degrees, and the next row
     constexpr float kRadiance = 2000.0f;
     constexpr double kAlbedo = 0.5;
-    const TemporaryImageFile map(patchEnvironmentMap(kMapWidth, kMapHeight, kFirstColumn,
-                                                     kFirstRow, 2, 2, glm::vec3(kRadiance)),
+    const TemporaryImageFile map(patchEnvironmentMap(kMapWidth, kMapHeight, kFirstColumn, kFirstRow,
+                                                     2, 2, glm::vec3(kRadiance)),
                                  ".exr");
     double irradiance = 0.0;
     const double columnWidth = 2.0 * kPi / kMapWidth;
@@ -151,9 +152,9 @@ TEST_P(SmallPatch, PlaneMatchesTheClosedFormOfTheEquivalentSmallDistantLight)
     }
     const double expected = kAlbedo / kPi * irradiance;
 
-    const scene::Scene scene = sceneFromText(mapLine(map) +
-                                             "0 3 0\n0 0 0\n0 0 -1\n40\n0\n1 solid 0.5 0.5 0.5\n"
-                                             "1\n0 0 0 0 0 0 0\n1\n0 0 polyhedron 1 0 1 0 0\n");
+    const scene::Scene scene =
+        sceneFromText(mapLine(map) + "0 3 0\n0 0 0\n0 0 -1\n40\n0\n1 solid 0.5 0.5 0.5\n"
+                                     "1\n0 0 0 0 0 0 0\n1\n0 0 polyhedron 1 0 1 0 0\n");
     settings::RenderSettings settings = settingsWithSeed(11);
     settings.multipleImportanceSampling = GetParam();
     const RenderedImage image = renderScene(scene, 48, 36, 32, settings);
@@ -196,16 +197,16 @@ TEST_P(Orientation, EachOctantOfDirectionsShowsItsColour)
         text << mapLine(map, "rotate " + std::to_string(degrees)) << "0 0 0\n"
              << look.x << " " << look.y << " " << look.z << "\n0 1 0\n4\n0\n1 solid 1 1 1\n"
              << "1\n0 0 0 0 0 0 1\n0\n";
-        const RenderedImage image = renderScene(sceneFromText(text.str()), 16, 12, 1,
-                                                settingsWithSeed(1));
+        const RenderedImage image =
+            renderScene(sceneFromText(text.str()), 16, 12, 1, settingsWithSeed(1));
         const glm::vec3 expected = octantColour(turnBack * look);
         for (int y = 0; y < image.height(); ++y)
             for (int x = 0; x < image.width(); ++x)
                 for (int c = 0; c < 3; ++c)
                     ASSERT_NEAR(image.radiance.at(x, y, c), expected[c], 1e-4)
                         << "looking towards (" << look.x << ", " << look.y << ", " << look.z
-                        << ") with the map turned " << degrees << " degrees, pixel (" << x
-                        << ", " << y << ") channel " << c;
+                        << ") with the map turned " << degrees << " degrees, pixel (" << x << ", "
+                        << y << ") channel " << c;
     }
 }
 
@@ -225,7 +226,8 @@ TEST(Orientation, TheMiddleColumnFacesMinusZ)
     const TemporaryImageFile map(patchEnvironmentMap(8, 4, 4, 1, 1, 2, glm::vec3(1.0f)), ".exr");
     auto seen = [&](const glm::dvec3& look) {
         std::ostringstream text;
-        text << mapLine(map) << "0 0 0\n" << look.x << " " << look.y << " " << look.z
+        text << mapLine(map) << "0 0 0\n"
+             << look.x << " " << look.y << " " << look.z
              << "\n0 1 0\n0.05\n0\n1 solid 1 1 1\n1\n0 0 0 0 0 0 1\n0\n";
         const RenderedImage image =
             renderScene(sceneFromText(text.str()), 4, 4, 1, settingsWithSeed(1));
@@ -253,7 +255,8 @@ TEST(EnvironmentMapFilter, CameraRaysSeeTheMapBilinearlyFiltered)
         const glm::dvec3 look = environmentMapDirection(u, v);
         std::ostringstream text;
         text.precision(17);
-        text << mapLine(map) << "0 0 0\n" << look.x << " " << look.y << " " << look.z
+        text << mapLine(map) << "0 0 0\n"
+             << look.x << " " << look.y << " " << look.z
              << "\n0 1 0\n0.05\n0\n1 solid 1 1 1\n1\n0 0 0 0 0 0 1\n0\n";
         const RenderedImage image =
             renderScene(sceneFromText(text.str()), 4, 4, 1, settingsWithSeed(1));

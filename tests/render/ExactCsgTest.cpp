@@ -49,7 +49,8 @@ void expectExactSilhouette(const std::string& sceneText, const Solid& solid)
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
             const float value = channelMean(image.radiance, x, y);
-            if (camera.wholePixel(x, y, [&](glm::dvec3 d) { return meets(solid, camera.eye(), d); })) {
+            if (camera.wholePixel(x, y,
+                                  [&](glm::dvec3 d) { return meets(solid, camera.eye(), d); })) {
                 ++inside;
                 EXPECT_LT(value, 1e-6f) << "pixel (" << x << ", " << y << ") is on the solid";
             } else if (camera.wholePixel(
@@ -65,18 +66,18 @@ void expectExactSilhouette(const std::string& sceneText, const Solid& solid)
 TEST(ExactCsg, ADrilledAndScoopedBoxIsMetWithinItsSilhouetteAndSeenThroughItsHole)
 {
     // From the front, a little above: the scoop and the hole both show.
-    expectExactSilhouette(blackSolidAgainstTheSky("0 1.2 3.6\n0 0.5 0\n0 1 0\n45\n",
-                                                  DrilledScoopedBox::kShape),
-                          DrilledScoopedBox{});
+    expectExactSilhouette(
+        blackSolidAgainstTheSky("0 1.2 3.6\n0 0.5 0\n0 1 0\n45\n", DrilledScoopedBox::kShape),
+        DrilledScoopedBox{});
 }
 
 TEST(ExactCsg, AnIntersectionUnderATransformIsMetWithinItsSilhouette)
 {
     const glm::dmat3 turn(glm::rotate(glm::dmat4(1.0), glm::radians(30.0), glm::dvec3(0, 1, 0)));
-    expectExactSilhouette(
-        blackSolidAgainstTheSky("2.5 1.8 3\n0 0 0\n0 1 0\n45\n",
-                                "rotate 0 1 0 30 intersection { sphere 0 0 0 1.3  box 0 0 0 1 1 1 }"),
-        RoundedCube{glm::dvec3(0.0), glm::transpose(turn)});
+    expectExactSilhouette(blackSolidAgainstTheSky(
+                              "2.5 1.8 3\n0 0 0\n0 1 0\n45\n",
+                              "rotate 0 1 0 30 intersection { sphere 0 0 0 1.3  box 0 0 0 1 1 1 }"),
+                          RoundedCube{glm::dvec3(0.0), glm::transpose(turn)});
 }
 
 // A lit grey solid on a floor, seen under a point light and the sky: every face's normal
@@ -109,23 +110,26 @@ void expectSameImage(const std::string& written, const std::string& cut)
     EXPECT_GT(sum / (kWidth * kHeight), 0.05) << "the images are lit";
     // A sample that rounding sends past an edge on one side only changes one pixel or two.
     EXPECT_LE(differing, 2) << differing << " pixels differ between\n"
-                            << written << "\nand\n" << cut;
+                            << written << "\nand\n"
+                            << cut;
 }
 
 TEST(ExactCsg, ABoxCutByAnotherShadesAsTheBoxThatIsLeft)
 {
     // The top of what is left is the cutting box's bottom face, whose normal is turned out.
-    expectSameImage(litSolidOnAFloor("translate 0.2 0 -0.1 rotate 0 1 0 35 box 0 0.4 0  0.8 0.4 0.6"),
-                    litSolidOnAFloor("translate 0.2 0 -0.1 rotate 0 1 0 35 difference {\n"
-                                     "  box 0 0.6 0  0.8 0.6 0.6\n  box 0 1.3 0  1 0.5 1\n}"));
+    expectSameImage(
+        litSolidOnAFloor("translate 0.2 0 -0.1 rotate 0 1 0 35 box 0 0.4 0  0.8 0.4 0.6"),
+        litSolidOnAFloor("translate 0.2 0 -0.1 rotate 0 1 0 35 difference {\n"
+                         "  box 0 0.6 0  0.8 0.6 0.6\n  box 0 1.3 0  1 0.5 1\n}"));
 }
 
 TEST(ExactCsg, AnIntersectionOfTwoBoxesShadesAsTheirCommonBox)
 {
-    expectSameImage(litSolidOnAFloor("rotate 0 1 0 -20 box 0 0.5 0  0.5 0.5 0.5"),
-                    litSolidOnAFloor("rotate 0 1 0 -20 intersection {\n"
-                                     "  box 0.3 0.5 0  0.8 0.5 0.5\n"
-                                     "  union { box -0.2 0.5 0  0.7 0.6 0.5  sphere 5 5 5 0.1 }\n}"));
+    expectSameImage(
+        litSolidOnAFloor("rotate 0 1 0 -20 box 0 0.5 0  0.5 0.5 0.5"),
+        litSolidOnAFloor("rotate 0 1 0 -20 intersection {\n"
+                         "  box 0.3 0.5 0  0.8 0.5 0.5\n"
+                         "  union { box -0.2 0.5 0  0.7 0.6 0.5  sphere 5 5 5 0.1 }\n}"));
 }
 
 }  // namespace

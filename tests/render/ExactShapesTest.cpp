@@ -78,10 +78,10 @@ struct DrilledRoundedCube {
         const double box = glm::length(glm::max(outside, glm::dvec3(0.0))) +
                            std::min(std::max(outside.x, std::max(outside.y, outside.z)), 0.0);
         const double roundedCube = std::max(glm::length(q) - 1.35, box);
-        const double drills = std::min(std::min(glm::length(glm::dvec2(q.x, q.y)),
-                                                glm::length(glm::dvec2(q.y, q.z))),
-                                       glm::length(glm::dvec2(q.x, q.z))) -
-                              0.7;
+        const double drills =
+            std::min(std::min(glm::length(glm::dvec2(q.x, q.y)), glm::length(glm::dvec2(q.y, q.z))),
+                     glm::length(glm::dvec2(q.x, q.z))) -
+            0.7;
         return std::max(roundedCube, -drills);
     }
 
@@ -195,8 +195,8 @@ TEST(ExactShapes, AFarTorusSeenNearlyEdgeOnIsMetWithinItsSilhouette)
     // quartic's coefficients would lose their digits if it were not solved from the ray's
     // point nearest the centre.
     const glm::dmat3 turn(glm::rotate(glm::dmat4(1.0), glm::radians(8.0), glm::dvec3(1, 0, 0)));
-    const std::string scene = blackSolidScene("0 40 600\n0 0 0\n0 1 0\n0.4\n",
-                                              "rotate 1 0 0 8 torus 0 0 0  1.5 0.45");
+    const std::string scene =
+        blackSolidScene("0 40 600\n0 0 0\n0 1 0\n0.4\n", "rotate 1 0 0 8 torus 0 0 0  1.5 0.45");
     const TorusSolid torus{{0, 0, 0}, 1.5, 0.45, glm::transpose(turn)};
     expectSilhouette(scene, torus, false);
     expectSilhouette(scene, torus, true);

@@ -76,20 +76,20 @@ TEST(FeatureBuffers, AlbedoOfALambertianPlaneIsItsPigmentAndItsNormalAndDepthThe
                 continue;
             ++compared;
             for (int c = 0; c < 3; ++c)
-                worstAlbedo = std::max(
-                    worstAlbedo, std::abs(features.albedoDepth.at(x, y, c) - pigment[c]));
-            worstNormal = std::max({worstNormal,
-                                    std::abs(double(features.normalCoverage.at(x, y, 0))),
-                                    std::abs(features.normalCoverage.at(x, y, 1) - 1.0),
-                                    std::abs(double(features.normalCoverage.at(x, y, 2)))});
+                worstAlbedo =
+                    std::max(worstAlbedo, std::abs(features.albedoDepth.at(x, y, c) - pigment[c]));
+            worstNormal =
+                std::max({worstNormal, std::abs(double(features.normalCoverage.at(x, y, 0))),
+                          std::abs(features.normalCoverage.at(x, y, 1) - 1.0),
+                          std::abs(double(features.normalCoverage.at(x, y, 2)))});
             EXPECT_EQ(features.normalCoverage.at(x, y, 3), 1.0f) << "every sample hits";
             const double expected = camera.pixelAverage(
                 x, y, 8, [&](const glm::dvec3& d) { return -camera.eye().y / d.y; });
             worstDepth = std::max(worstDepth,
                                   std::abs(features.albedoDepth.at(x, y, 3) - expected) / expected);
         }
-    std::printf("plane: %d pixels, worst albedo %.3g, normal %.3g, relative depth %.3g\n",
-                compared, worstAlbedo, worstNormal, worstDepth);
+    std::printf("plane: %d pixels, worst albedo %.3g, normal %.3g, relative depth %.3g\n", compared,
+                worstAlbedo, worstNormal, worstDepth);
     EXPECT_GT(compared, kWidth * kHeight / 2);
     EXPECT_LT(worstAlbedo, 1e-5) << "the albedo is the pigment, whatever the lighting";
     EXPECT_LT(worstNormal, 1e-5) << "the floor's normal is (0, 1, 0)";
@@ -130,8 +130,8 @@ TEST(FeatureBuffers, NormalsOfASphereAreTheClosedForm)
                 const double expected = camera.pixelAverage(x, y, 8, [&](const glm::dvec3& d) {
                     return (eye + *sphereDistance(eye, d) * d)[c];
                 });
-                worstNormal = std::max(
-                    worstNormal, std::abs(features.normalCoverage.at(x, y, c) - expected));
+                worstNormal =
+                    std::max(worstNormal, std::abs(features.normalCoverage.at(x, y, c) - expected));
             }
             const double depth = camera.pixelAverage(
                 x, y, 8, [&](const glm::dvec3& d) { return *sphereDistance(eye, d); });
@@ -150,8 +150,7 @@ TEST(FeatureBuffers, NormalsOfASphereAreTheClosedForm)
 
 TEST(FeatureBuffers, AreNotKeptUnlessAsked)
 {
-    const RenderedImage image =
-        renderScene(unitSphere(), 16, 12, 1, settingsWithSeed(5));
+    const RenderedImage image = renderScene(unitSphere(), 16, 12, 1, settingsWithSeed(5));
     EXPECT_FALSE(image.accumulation.hasFeatures());
 }
 
@@ -211,9 +210,9 @@ TEST(FeatureBuffers, ResumeGoesOnAsTheRenderThatNeverStopped)
     const film::Accumulation resumed = second.accumulation();
     int differing = 0;
     for (std::size_t i = 0; i < resumed.albedoDepth.pixels.size(); ++i)
-        differing += (resumed.albedoDepth.pixels[i] != whole.accumulation.albedoDepth.pixels[i]) +
-                     (resumed.normalCoverage.pixels[i] !=
-                      whole.accumulation.normalCoverage.pixels[i]);
+        differing +=
+            (resumed.albedoDepth.pixels[i] != whole.accumulation.albedoDepth.pixels[i]) +
+            (resumed.normalCoverage.pixels[i] != whole.accumulation.normalCoverage.pixels[i]);
     EXPECT_EQ(differing, 0) << "the features must be those of the render that never stopped";
 
     render::ProgressiveRenderer withoutFeatures(scene, 32, 24, settingsWithSeed(21));
@@ -282,8 +281,8 @@ TEST(FeatureBuffers, OpenImageDenoiseBringsANoisyRenderNearerTheConvergedOne)
         film::denoiseImage(noisy.radiance, rgbOf(a.albedoDepth), rgbOf(a.normalCoverage));
     const double raw = relativeRmse(noisy.radiance, converged.radiance);
     const double after = relativeRmse(denoised, converged.radiance);
-    EXPECT_LT(after, 0.7 * raw) << "relative RMSE " << raw << " raw, " << after
-                                << " denoised (" << film::denoiserLibrary() << ")";
+    EXPECT_LT(after, 0.7 * raw) << "relative RMSE " << raw << " raw, " << after << " denoised ("
+                                << film::denoiserLibrary() << ")";
 }
 
 // The window's à-trous filter (render/PreviewDenoiser.h): nearer the converged image than the

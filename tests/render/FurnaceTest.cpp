@@ -80,8 +80,7 @@ TEST(WhiteFurnace, LambertianSphereOfAlbedoOneVanishes)
         renderScene(furnace("1 1 1", "0 0 0  0 0 0 0"), kWidth, kHeight, 16, settingsWithSeed(3));
     const Deviation deviation = deviationFrom(image, 1.0, [](int, int) { return true; });
     EXPECT_LE(deviation.largest, 1e-4)
-        << "every pixel should be exactly 1 (environment 1, albedo 1); "
-        << deviation.describe();
+        << "every pixel should be exactly 1 (environment 1, albedo 1); " << deviation.describe();
     EXPECT_EQ(image.discardedSamples, 0u);
 }
 
@@ -104,8 +103,8 @@ TEST(WhiteFurnace, MirrorSphereVanishes)
     const RenderedImage image =
         renderScene(furnace("1 1 1", "0 0 0  0 1 0 0"), kWidth, kHeight, 8, settingsWithSeed(3));
     const Deviation deviation = deviationFrom(image, 1.0, [](int, int) { return true; });
-    EXPECT_LE(deviation.largest, 1e-4) << "every pixel should be exactly 1; "
-                                       << deviation.describe();
+    EXPECT_LE(deviation.largest, 1e-4)
+        << "every pixel should be exactly 1; " << deviation.describe();
 }
 
 // Pigment 1 makes Schlick's Fresnel 1, so only the glossy lobe is sampled; its sample weight
@@ -168,8 +167,8 @@ TEST(WhiteFurnace, SharpBlinnPhongSphereReflectsNearlyAllAtNormalIncidence)
 // not. Tested per 4x4 block with the renderer's variance: no block above 1 + 5 sigma.
 TEST(WhiteFurnace, BlinnPhongMixtureSphereIsNeverBrighterThanTheFurnace)
 {
-    const RenderedImage image =
-        renderScene(furnace("0.6 0.6 0.6", "0 0 0  50 0 0 0"), kWidth, kHeight, 64, settingsWithSeed(5));
+    const RenderedImage image = renderScene(furnace("0.6 0.6 0.6", "0 0 0  50 0 0 0"), kWidth,
+                                            kHeight, 64, settingsWithSeed(5));
     double worstZ = -1e9;
     for (int by = 0; by < kHeight; by += 4)
         for (int bx = 0; bx < kWidth; bx += 4) {
@@ -268,10 +267,10 @@ TEST_P(RoughConductorFurnace, WhiteConductorReflectsAllItReceivesWithEnergyCompe
     const SphereMean compensated = meanOnSphere(scene, renderFurnace(scene, true, 64));
     const SphereMean single = meanOnSphere(scene, renderFurnace(scene, false, 64));
     ASSERT_GT(compensated.pixels, 300);
-    std::cout << "rough conductor, alpha " << alpha << ", R0 = 1, in the furnace: "
-              << compensated.mean << " +- " << compensated.sigma << " with energy compensation, "
-              << single.mean << " +- " << single.sigma << " without (sphere's mean over "
-              << compensated.pixels << " pixels)\n";
+    std::cout << "rough conductor, alpha " << alpha
+              << ", R0 = 1, in the furnace: " << compensated.mean << " +- " << compensated.sigma
+              << " with energy compensation, " << single.mean << " +- " << single.sigma
+              << " without (sphere's mean over " << compensated.pixels << " pixels)\n";
     EXPECT_NEAR(compensated.mean, 1.0, 0.02)
         << "a white rough conductor (alpha " << alpha << ") with energy compensation should "
         << "reflect all of the furnace, within 2 %; it reads " << compensated.mean
@@ -298,8 +297,8 @@ TEST_P(RoughDielectricFurnace, ClearRoughGlassCreatesNoEnergy)
     const RenderedImage image = renderFurnace(scene, true, 128);
     const SphereMean sphere = meanOnSphere(scene, image);
     ASSERT_GT(sphere.pixels, 300);
-    std::cout << "rough dielectric, alpha " << alpha << ", index 1.5, in the furnace: "
-              << sphere.mean << " +- " << sphere.sigma << "\n";
+    std::cout << "rough dielectric, alpha " << alpha
+              << ", index 1.5, in the furnace: " << sphere.mean << " +- " << sphere.sigma << "\n";
     EXPECT_LE(sphere.mean, 1.0 + 5.0 * sphere.sigma + 1e-4)
         << "rough glass (alpha " << alpha << ") must not create energy; it reads " << sphere.mean;
     EXPECT_EQ(image.discardedSamples, 0u);

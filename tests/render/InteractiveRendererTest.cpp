@@ -25,9 +25,12 @@ std::string sceneText(const std::string& colour = "0.8 0.1 0.1",
                       const std::string& sphere = "0 0 sphere 0 0.5 0  0.5")
 {
     return "0 1.2 4\n0 0.5 0\n0 1 0\n45\n1\n2 5 3  40 40 40\n"
-           "2\nsolid " + colour + "\nsolid 0.5 0.5 0.5\n"
+           "2\nsolid " +
+           colour +
+           "\nsolid 0.5 0.5 0.5\n"
            "1\n0 0 0  0 0 0 0\n"
-           "2\n" + sphere + "\n1 0 polyhedron 1\n    0 1 0 0\n";
+           "2\n" +
+           sphere + "\n1 0 polyhedron 1\n    0 1 0 0\n";
 }
 
 void renderSamples(render::ProgressiveRenderer& renderer, int samples)
@@ -79,8 +82,8 @@ TEST(InteractiveRenderer, AnEditThatChangesNothingOnScreenKeepsTheAccumulation)
 
 TEST(InteractiveRenderer, AnEditThatDoesNotCompileLeavesTheRendererAsItWas)
 {
-    const fs::path folder = fs::temp_directory_path() /
-                            ("raytracer-broken-sdf-" + std::to_string(::getpid()));
+    const fs::path folder =
+        fs::temp_directory_path() / ("raytracer-broken-sdf-" + std::to_string(::getpid()));
     fs::create_directories(folder);
     std::ofstream(folder / "blob.glsl") << "float blob(vec3 p, vec3 x)\n{\n"
                                            "    return length(p - x) - 0.5;\n}\n";
@@ -93,9 +96,9 @@ TEST(InteractiveRenderer, AnEditThatDoesNotCompileLeavesTheRendererAsItWas)
 
     std::ofstream(folder / "blob.glsl") << "float blob(vec3 p, vec3 x)\n{\n"
                                            "    return length(p - x) - wobble(p);\n}\n";
-    EXPECT_THROW(renderer.setScene(scene::parseSceneText(text, "blob.in", lookup),
-                                   {folder / "blob.glsl"}),
-                 std::runtime_error);
+    EXPECT_THROW(
+        renderer.setScene(scene::parseSceneText(text, "blob.in", lookup), {folder / "blob.glsl"}),
+        std::runtime_error);
     fs::remove_all(folder);
     EXPECT_EQ(renderer.samplesPerPixel(), 4) << "the accumulation goes on";
     EXPECT_EQ(largestDifference(renderer.radiance(), before), 0.0) << "the image stays";

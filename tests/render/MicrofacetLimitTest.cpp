@@ -44,10 +44,9 @@ double relativeMeanDifference(const RenderedImage& a, const RenderedImage& b)
 double differenceFromSmooth(const std::string& smooth, const std::string& rough)
 {
     const settings::RenderSettings settings = settingsWithSeed(3);
-    const RenderedImage reference = renderScene(ballOverCheckers(smooth), kWidth, kHeight, 16,
-                                                settings);
-    const RenderedImage image = renderScene(ballOverCheckers(rough), kWidth, kHeight, 16,
-                                            settings);
+    const RenderedImage reference =
+        renderScene(ballOverCheckers(smooth), kWidth, kHeight, 16, settings);
+    const RenderedImage image = renderScene(ballOverCheckers(rough), kWidth, kHeight, 16, settings);
     return relativeMeanDifference(image, reference);
 }
 

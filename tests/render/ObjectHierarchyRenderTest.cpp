@@ -30,7 +30,8 @@ std::string ballsOnAFloor(int count, bool marchedToo)
     std::ostringstream out;
     out << "0 5 9   0 0 -0.5   0 1 0   45\n1\n3 8 5  120 120 120\n"
         << "3\nsolid 0.8 0.8 0.8\nsolid 0.8 0.3 0.2\nsolid 0.2 0.4 0.8\n"
-        << "2\n0 0 0  0 0 0 0\n6 6 6  0 0 0 0\n" << count << "\n"
+        << "2\n0 0 0  0 0 0 0\n6 6 6  0 0 0 0\n"
+        << count << "\n"
         << "0 0 polyhedron 1  0 1 0 0\n"
         << "0 1 sphere 0 3 -2  0.3\n";
     for (int i = 2; i < count; ++i) {
@@ -39,8 +40,8 @@ std::string ballsOnAFloor(int count, bool marchedToo)
         const float z = half * (2.0f * unit(rng) - 1.0f);
         out << 1 + i % 2 << " 0 ";
         if (marchedToo && i % 5 == 0)
-            out << "rounded_box " << x << " " << r << " " << z << "  " << r << " " << r << " "
-                << r << "  " << 0.3f * r << "\n";
+            out << "rounded_box " << x << " " << r << " " << z << "  " << r << " " << r << " " << r
+                << "  " << 0.3f * r << "\n";
         else if (marchedToo && i % 7 == 0)
             out << "torus " << x << " " << 0.4f * r << " " << z << "  " << r << " " << 0.4f * r
                 << "\n";
@@ -58,8 +59,8 @@ void expectSameImage(const scene::Scene& scene, const std::string& name)
     const RenderedImage a = renderScene(scene, 48, 36, 16, specialized);
     const RenderedImage b = renderScene(scene, 48, 36, 16, general);
     const Comparison comparison = compareImages(b, a);
-    EXPECT_TRUE(comparison.passed())
-        << name << ": through the hierarchy against specialised:\n" << comparison.describe();
+    EXPECT_TRUE(comparison.passed()) << name << ": through the hierarchy against specialised:\n"
+                                     << comparison.describe();
 }
 
 TEST(ObjectHierarchyRender, BallsOnAFloorAgreeWithTheSpecialisedShader)

@@ -22,14 +22,12 @@ TEST(AutomaticKernel, OnAGraphicsLightDataCentreGpuIsTheComputeKernel)
 {
     for (const char* renderer : {"NVIDIA H100 80GB HBM3/PCIe/SSE2", "NVIDIA H200/PCIe/SSE2",
                                  "NVIDIA GH200 480GB/PCIe/SSE2"})
-        EXPECT_EQ(render::automaticKernel(renderer, true).kernel, PathKernel::Compute)
-            << renderer;
+        EXPECT_EQ(render::automaticKernel(renderer, true).kernel, PathKernel::Compute) << renderer;
 }
 
 TEST(AutomaticKernel, WithoutComputeShadersIsTheFragmentKernel)
 {
-    EXPECT_EQ(render::automaticKernel("NVIDIA H200/PCIe/SSE2", false).kernel,
-              PathKernel::Fragment);
+    EXPECT_EQ(render::automaticKernel("NVIDIA H200/PCIe/SSE2", false).kernel, PathKernel::Fragment);
 }
 
 TEST(AutomaticKernel, OnARendererNotMeasuredIsTheFragmentKernelAndSaysSo)

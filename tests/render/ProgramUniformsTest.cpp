@@ -39,8 +39,7 @@ TEST(ProgramUniforms, SettingAMisspeltUniformIsAnError)
     render::PathTracerProgram program(prepared.pathTracerSource, settings::PathKernel::Fragment,
                                       render::defaultShaderDirectory());
     program.program().use();
-    const std::string error =
-        errorOf([&] { program.uniforms().set("uHitTolerence", 0.5f); });
+    const std::string error = errorOf([&] { program.uniforms().set("uHitTolerence", 0.5f); });
     EXPECT_NE(error.find("uHitTolerence, which the shader does not declare"), std::string::npos)
         << error;
 }
@@ -92,9 +91,9 @@ TEST(ProgramUniforms, EverySettingTheShaderReadsIsALiveUniform)
     general.variant = settings::ShaderVariant::General;
     const render::PreparedScene generalScene1 =
         render::prepareScene(scene1(), general, render::defaultShaderDirectory());
-    const render::PreparedScene specializedScene6 = render::prepareScene(
-        scene::parseSceneFile(sourceDirectory() / "scenes" / "scene6.in"), {},
-        render::defaultShaderDirectory());
+    const render::PreparedScene specializedScene6 =
+        render::prepareScene(scene::parseSceneFile(sourceDirectory() / "scenes" / "scene6.in"), {},
+                             render::defaultShaderDirectory());
     render::PathTracerProgram first(generalScene1.pathTracerSource, settings::PathKernel::Fragment,
                                     render::defaultShaderDirectory());
     render::PathTracerProgram second(specializedScene6.pathTracerSource,

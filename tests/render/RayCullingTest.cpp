@@ -113,8 +113,8 @@ TEST_P(RayCulling, RenderAgreesWithTheUnculledRender)
     const RenderedImage withCulling = renderScene(scene, 64, 48, 64, culled);
     const RenderedImage withoutCulling = renderScene(scene, 64, 48, 64, unculled);
     const Comparison comparison = compareImages(withCulling, withoutCulling);
-    EXPECT_TRUE(comparison.passed())
-        << GetParam().name << ": culled against unculled:\n" << comparison.describe();
+    EXPECT_TRUE(comparison.passed()) << GetParam().name << ": culled against unculled:\n"
+                                     << comparison.describe();
 }
 
 // The general shader culls nothing by ray (it finds surfaces through the hierarchy over the
@@ -135,8 +135,8 @@ TEST_P(RayCulling, GeneralShaderThroughTheHierarchyAgreesWithTheSpecialisedShade
     const RenderedImage a = renderScene(scene, 64, 48, 32, specialized);
     const RenderedImage b = renderScene(scene, 64, 48, 32, general);
     const Comparison comparison = compareImages(b, a);
-    EXPECT_TRUE(comparison.passed())
-        << GetParam().name << ": general against specialised:\n" << comparison.describe();
+    EXPECT_TRUE(comparison.passed()) << GetParam().name << ": general against specialised:\n"
+                                     << comparison.describe();
 }
 
 INSTANTIATE_TEST_SUITE_P(Scene, RayCulling,

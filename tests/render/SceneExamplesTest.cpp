@@ -27,7 +27,8 @@ std::vector<std::string> shippedScenes()
         if (entry.path().extension() == ".in")
             names.push_back("examples/" + entry.path().filename().string());
     for (const auto& entry : fs::directory_iterator(sourceDirectory() / "scenes"))
-        if (entry.path().extension() == ".in" && entry.path().filename().string().rfind("fig", 0) == 0)
+        if (entry.path().extension() == ".in" &&
+            entry.path().filename().string().rfind("fig", 0) == 0)
             names.push_back(entry.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
@@ -98,8 +99,7 @@ RenderedImage cropped(const RenderedImage& image, const PixelWindow& window)
             for (int c = 0; c < image.radiance.channels; ++c)
                 part.radiance.at(x, y, c) = image.radiance.at(window.x + x, window.y + y, c);
             for (int c = 0; c < image.statistics.channels; ++c)
-                part.statistics.at(x, y, c) =
-                    image.statistics.at(window.x + x, window.y + y, c);
+                part.statistics.at(x, y, c) = image.statistics.at(window.x + x, window.y + y, c);
         }
     return part;
 }
@@ -113,22 +113,21 @@ TEST_P(CsgSyntaxTwin, RendersAsTheUserSdfItReplaces)
     const std::string name = twin.name;
     const RenderedImage csg = renderScene(loadScene(scenes / (name + ".in")), kTwinWidth,
                                           kTwinHeight, 64, settingsWithSeed(11));
-    const RenderedImage user = renderScene(loadScene(scenes / (name + "-usersdf.in")),
-                                           kTwinWidth, kTwinHeight, 64, settingsWithSeed(12));
+    const RenderedImage user = renderScene(loadScene(scenes / (name + "-usersdf.in")), kTwinWidth,
+                                           kTwinHeight, 64, settingsWithSeed(12));
     const Comparison comparison =
         compareImages(cropped(csg, twin.compared), cropped(user, twin.compared));
     EXPECT_TRUE(comparison.passed()) << name << " in CSG syntax against its user-SDF twin:\n"
                                      << comparison.describe();
 }
 
-INSTANTIATE_TEST_SUITE_P(Figures, CsgSyntaxTwin,
-                         ::testing::Values(CsgTwin{"fig04-csg-solid", {}},
-                                           CsgTwin{"fig12-csg-diffuse", {}},
-                                           CsgTwin{"fig14-smooth-csg-cornell",
-                                                   {16, 8, 36, 34}}),  // the molecule
-                         [](const ::testing::TestParamInfo<CsgTwin>& info) {
-                             return std::string(info.param.name).substr(0, 5);
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Figures, CsgSyntaxTwin,
+    ::testing::Values(CsgTwin{"fig04-csg-solid", {}}, CsgTwin{"fig12-csg-diffuse", {}},
+                      CsgTwin{"fig14-smooth-csg-cornell", {16, 8, 36, 34}}),  // the molecule
+    [](const ::testing::TestParamInfo<CsgTwin>& info) {
+        return std::string(info.param.name).substr(0, 5);
+    });
 
 }  // namespace
 }  // namespace render_tests

@@ -100,8 +100,8 @@ TEST(ThinLens, PointOffThePlaneOfFocusSpreadsIntoADiscOfThePredictedRadius)
               << "; image power " << lens.power << " through the lens, " << pinhole.power
               << " through the pinhole\n";
     EXPECT_NEAR(radius, predicted, 0.03 * predicted)
-        << "a ball at twice the focus distance should spread into a disc of radius "
-        << predicted << " pixels (A |d - f| / (d f), in pixels)";
+        << "a ball at twice the focus distance should spread into a disc of radius " << predicted
+        << " pixels (A |d - f| / (d f), in pixels)";
     // The lens moves the ball's light around the film; it neither adds nor loses any.
     EXPECT_NEAR(lens.power, pinhole.power, 0.03 * pinhole.power)
         << "the blurred image should hold the sharp one's power";

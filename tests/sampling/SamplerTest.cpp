@@ -89,9 +89,8 @@ TEST(Sampler, EveryPowerOfTwoPrefixOfAPixelsSamplesIsStratifiedInEachDecision)
                 bool stratified = true;
                 for (double u : firsts)
                     stratified = stratified && ++intervals[static_cast<int>(u * (1 << m))] == 1;
-                EXPECT_TRUE(stratified) << "the first " << (1 << m)
-                                        << " 1D samples of dimension " << dimension
-                                        << " (seed " << seed << ") are not stratified";
+                EXPECT_TRUE(stratified) << "the first " << (1 << m) << " 1D samples of dimension "
+                                        << dimension << " (seed " << seed << ") are not stratified";
             }
         }
     }
@@ -119,9 +118,10 @@ TEST(Sampler, EverySampleIsUniformOverTheSquareAcrossPixels)
             const std::vector<glm::vec3> numbers = acrossPixels(sampler, sobol, index, 4, 5);
             std::vector<double> observed(kBins * kBins + kBins, 0.0);
             for (const glm::vec3& u : numbers) {
-                ASSERT_TRUE(u.x >= 0.0f && u.x < 1.0f && u.y >= 0.0f && u.y < 1.0f &&
-                            u.z >= 0.0f && u.z < 1.0f);
-                observed[static_cast<int>(u.x * kBins) * kBins + static_cast<int>(u.y * kBins)] += 1;
+                ASSERT_TRUE(u.x >= 0.0f && u.x < 1.0f && u.y >= 0.0f && u.y < 1.0f && u.z >= 0.0f &&
+                            u.z < 1.0f);
+                observed[static_cast<int>(u.x * kBins) * kBins + static_cast<int>(u.y * kBins)] +=
+                    1;
                 observed[kBins * kBins + static_cast<int>(u.z * kBins)] += 1;
             }
             // The 2D cells and, apart, the 1D intervals: two histograms of n samples each.
@@ -129,9 +129,8 @@ TEST(Sampler, EverySampleIsUniformOverTheSquareAcrossPixels)
             std::vector<double> expected(kBins * kBins, n / (kBins * kBins));
             expected.insert(expected.end(), kBins, n / kBins);
             const auto result = chiSquareTest(observed, expected, 1e-4);
-            EXPECT_TRUE(result.passed)
-                << (sobol ? "sobol" : "independent") << " sample " << index
-                << " is not uniform across pixels: " << result.describe();
+            EXPECT_TRUE(result.passed) << (sobol ? "sobol" : "independent") << " sample " << index
+                                       << " is not uniform across pixels: " << result.describe();
         }
 }
 
@@ -162,8 +161,8 @@ TEST(Sampler, DecisionsPixelsAndSeedsAreUncorrelated)
     // about 0.002; 0.01 is five of them.
     const double limit = 0.01;
     const auto a = acrossPixels(sampler, true, 3, 4, 5);
-    const auto b = acrossPixels(sampler, true, 3, 6, 5);     // another decision
-    const auto c = acrossPixels(sampler, true, 3, 4, 6);     // another seed
+    const auto b = acrossPixels(sampler, true, 3, 6, 5);  // another decision
+    const auto c = acrossPixels(sampler, true, 3, 4, 6);  // another seed
     std::vector<double> ax, ay, bx, cx, neighbourX;
     for (int y = 0; y < kSide; ++y)
         for (int x = 0; x + 1 < kSide; ++x) {

@@ -63,8 +63,7 @@ std::vector<int> equalMassEdges(const std::vector<double>& mass, int bins)
 
 int binOf(const std::vector<int>& edges, int cell)
 {
-    return static_cast<int>(std::upper_bound(edges.begin(), edges.end(), cell) - edges.begin()) -
-           1;
+    return static_cast<int>(std::upper_bound(edges.begin(), edges.end(), cell) - edges.begin()) - 1;
 }
 
 struct Histograms {
@@ -135,8 +134,8 @@ Histograms histogramsFor(const SamplingCase& samplingCase, const GridLayout& gri
             std::ostringstream name;
             name << "theta [" << thetaEdges[a] * degreesPerCellTheta << ", "
                  << thetaEdges[a + 1] * degreesPerCellTheta << ") phi ["
-                 << phiEdges[b] * degreesPerCellPhi << ", "
-                 << phiEdges[b + 1] * degreesPerCellPhi << ")";
+                 << phiEdges[b] * degreesPerCellPhi << ", " << phiEdges[b + 1] * degreesPerCellPhi
+                 << ")";
             histograms.binNames.push_back(name.str());
         }
     histograms.binNames.push_back("no sample returned");
@@ -146,9 +145,9 @@ Histograms histogramsFor(const SamplingCase& samplingCase, const GridLayout& gri
         // The renderer's own sampler: every fragment a pixel of its own, at sample `draw`.
         SamplerChoice choice;
         choice.sampleIndex = draw;
-        const auto values = sampler.sampleDirections(samplingCase, kSampleSide, kSampleSide,
-                                                     1000 + static_cast<std::uint64_t>(draw),
-                                                     choice);
+        const auto values =
+            sampler.sampleDirections(samplingCase, kSampleSide, kSampleSide,
+                                     1000 + static_cast<std::uint64_t>(draw), choice);
         for (const glm::vec4& value : values) {
             samples += 1.0;
             if (value.w < 0.0f) {
@@ -191,15 +190,17 @@ void expectSamplesFollowPdf(const SamplingCase& samplingCase, const GridLayout& 
     const ChiSquareResult result =
         chiSquareTest(histograms.observed, histograms.expected, kSignificance);
     std::cout << what << ": " << histograms.layout << ", " << result.describe() << "\n";
-    EXPECT_TRUE(result.passed)
-        << what << ": the sampled directions should follow the pdf (" << histograms.layout
-        << ", " << kDraws * kSampleSide * kSampleSide << " samples, significance "
-        << kSignificance << "), but " << result.describe() << "; samples with no direction "
-        << histograms.observed.back() << " (expected " << histograms.expected.back()
-        << "); the bins furthest from their expectation:" << histograms.worstBins(6);
+    EXPECT_TRUE(result.passed) << what << ": the sampled directions should follow the pdf ("
+                               << histograms.layout << ", " << kDraws * kSampleSide * kSampleSide
+                               << " samples, significance " << kSignificance << "), but "
+                               << result.describe() << "; samples with no direction "
+                               << histograms.observed.back() << " (expected "
+                               << histograms.expected.back()
+                               << "); the bins furthest from their expectation:"
+                               << histograms.worstBins(6);
     EXPECT_EQ(histograms.outsideGrid, 0.0)
-        << what << ": directions were drawn where the pdf is zero (beyond theta = "
-        << grid.thetaMax << ")";
+        << what << ": directions were drawn where the pdf is zero (beyond theta = " << grid.thetaMax
+        << ")";
 }
 
 // --- the statistics themselves --------------------------------------------------------
@@ -288,8 +289,8 @@ INSTANTIATE_TEST_SUITE_P(Exponent, BlinnPhongHalfVectorSampling,
 
 struct MaterialCase {
     float exponent;
-    float viewDegrees;     // angle between wo and the normal
-    float pigment;         // R0: 1 makes Schlick's Fresnel 1, so only the lobe is sampled
+    float viewDegrees;  // angle between wo and the normal
+    float pigment;      // R0: 1 makes Schlick's Fresnel 1, so only the lobe is sampled
     glm::vec3 normal;
     const char* name;
 };
@@ -325,8 +326,8 @@ TEST_P(BlinnPhongMaterialSampling, DirectionsFollowBlinnPhongPdf)
     const SamplingCase samplingCase = materialSamplingCase(GetParam(), grid.frame);
     std::ostringstream what;
     what << "blinnPhongSample (exponent " << GetParam().exponent << ", wo "
-         << GetParam().viewDegrees << " degrees from the normal, pigment "
-         << GetParam().pigment << ")";
+         << GetParam().viewDegrees << " degrees from the normal, pigment " << GetParam().pigment
+         << ")";
     expectSamplesFollowPdf(samplingCase, grid, what.str());
 }
 
@@ -355,10 +356,9 @@ TEST_P(BlinnPhongMaterialSampling, SampleWeightsAverageToTheIntegralOfEvaluate)
     double squares = 0.0;
     double count = 0.0;
     for (int draw = 0; draw < kDraws; ++draw)
-        for (const glm::vec4& weight :
-             sampler.sampleWeights(samplingCase, kSampleSide, kSampleSide,
-                                   2000 + static_cast<std::uint64_t>(draw),
-                                   SamplerChoice{true, false, draw, 4})) {
+        for (const glm::vec4& weight : sampler.sampleWeights(
+                 samplingCase, kSampleSide, kSampleSide, 2000 + static_cast<std::uint64_t>(draw),
+                 SamplerChoice{true, false, draw, 4})) {
             const double value = (weight.x + weight.y + weight.z) / 3.0;
             sum += value;
             squares += value * value;
@@ -466,28 +466,160 @@ TEST_P(RoughMaterialSampling, DirectionsFollowTheirPdf)
 }
 
 const RoughCase kRoughCases[] = {
-    {SamplingRoutine::RoughConductorMaterial, 0.05f, 0.0f, true, 1.0f, {0, 0, 1}, "conductor_a005_normal_view"},
-    {SamplingRoutine::RoughConductorMaterial, 0.05f, 45.0f, true, 1.0f, {0, 0, 1}, "conductor_a005_view45"},
-    {SamplingRoutine::RoughConductorMaterial, 0.05f, 80.0f, true, 1.0f, {0, 0, 1}, "conductor_a005_view80"},
-    {SamplingRoutine::RoughConductorMaterial, 0.3f, 0.0f, true, 1.0f, {0, 0, 1}, "conductor_a03_normal_view"},
-    {SamplingRoutine::RoughConductorMaterial, 0.3f, 45.0f, true, 1.0f, {0, 0, 1}, "conductor_a03_view45"},
-    {SamplingRoutine::RoughConductorMaterial, 0.3f, 80.0f, true, 1.0f, {0, 0, 1}, "conductor_a03_view80"},
-    {SamplingRoutine::RoughConductorMaterial, 1.0f, 0.0f, true, 1.0f, {0, 0, 1}, "conductor_a1_normal_view"},
-    {SamplingRoutine::RoughConductorMaterial, 1.0f, 45.0f, true, 1.0f, {0, 0, 1}, "conductor_a1_view45"},
-    {SamplingRoutine::RoughConductorMaterial, 1.0f, 80.0f, true, 1.0f, {0, 0, 1}, "conductor_a1_view80"},
-    {SamplingRoutine::RoughConductorMaterial, 0.3f, 60.0f, true, 0.5f, {1, 2, 3}, "conductor_a03_view60_tinted_tilted_normal"},
-    {SamplingRoutine::RoughDielectricMaterial, 0.05f, 45.0f, true, 1.0f, {0, 0, 1}, "dielectric_a005_entering_view45"},
-    {SamplingRoutine::RoughDielectricMaterial, 0.05f, 80.0f, true, 1.0f, {0, 0, 1}, "dielectric_a005_entering_view80"},
-    {SamplingRoutine::RoughDielectricMaterial, 0.05f, 30.0f, false, 1.0f, {0, 0, 1}, "dielectric_a005_leaving_view30"},
-    {SamplingRoutine::RoughDielectricMaterial, 0.05f, 60.0f, false, 1.0f, {0, 0, 1}, "dielectric_a005_leaving_view60"},
-    {SamplingRoutine::RoughDielectricMaterial, 0.3f, 45.0f, true, 1.0f, {0, 0, 1}, "dielectric_a03_entering_view45"},
-    {SamplingRoutine::RoughDielectricMaterial, 0.3f, 80.0f, true, 1.0f, {0, 0, 1}, "dielectric_a03_entering_view80"},
-    {SamplingRoutine::RoughDielectricMaterial, 0.3f, 30.0f, false, 1.0f, {0, 0, 1}, "dielectric_a03_leaving_view30"},
-    {SamplingRoutine::RoughDielectricMaterial, 0.3f, 60.0f, false, 1.0f, {0, 0, 1}, "dielectric_a03_leaving_view60"},
-    {SamplingRoutine::RoughDielectricMaterial, 1.0f, 0.0f, true, 1.0f, {0, 0, 1}, "dielectric_a1_entering_normal_view"},
-    {SamplingRoutine::RoughDielectricMaterial, 1.0f, 80.0f, true, 1.0f, {0, 0, 1}, "dielectric_a1_entering_view80"},
-    {SamplingRoutine::RoughDielectricMaterial, 1.0f, 30.0f, false, 1.0f, {1, 2, 3}, "dielectric_a1_leaving_view30_tilted_normal"},
-    {SamplingRoutine::RoughDielectricMaterial, 1.0f, 60.0f, false, 1.0f, {0, 0, 1}, "dielectric_a1_leaving_view60"},
+    {SamplingRoutine::RoughConductorMaterial,
+     0.05f,
+     0.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "conductor_a005_normal_view"},
+    {SamplingRoutine::RoughConductorMaterial,
+     0.05f,
+     45.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "conductor_a005_view45"},
+    {SamplingRoutine::RoughConductorMaterial,
+     0.05f,
+     80.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "conductor_a005_view80"},
+    {SamplingRoutine::RoughConductorMaterial,
+     0.3f,
+     0.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "conductor_a03_normal_view"},
+    {SamplingRoutine::RoughConductorMaterial,
+     0.3f,
+     45.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "conductor_a03_view45"},
+    {SamplingRoutine::RoughConductorMaterial,
+     0.3f,
+     80.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "conductor_a03_view80"},
+    {SamplingRoutine::RoughConductorMaterial,
+     1.0f,
+     0.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "conductor_a1_normal_view"},
+    {SamplingRoutine::RoughConductorMaterial,
+     1.0f,
+     45.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "conductor_a1_view45"},
+    {SamplingRoutine::RoughConductorMaterial,
+     1.0f,
+     80.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "conductor_a1_view80"},
+    {SamplingRoutine::RoughConductorMaterial,
+     0.3f,
+     60.0f,
+     true,
+     0.5f,
+     {1, 2, 3},
+     "conductor_a03_view60_tinted_tilted_normal"},
+    {SamplingRoutine::RoughDielectricMaterial,
+     0.05f,
+     45.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "dielectric_a005_entering_view45"},
+    {SamplingRoutine::RoughDielectricMaterial,
+     0.05f,
+     80.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "dielectric_a005_entering_view80"},
+    {SamplingRoutine::RoughDielectricMaterial,
+     0.05f,
+     30.0f,
+     false,
+     1.0f,
+     {0, 0, 1},
+     "dielectric_a005_leaving_view30"},
+    {SamplingRoutine::RoughDielectricMaterial,
+     0.05f,
+     60.0f,
+     false,
+     1.0f,
+     {0, 0, 1},
+     "dielectric_a005_leaving_view60"},
+    {SamplingRoutine::RoughDielectricMaterial,
+     0.3f,
+     45.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "dielectric_a03_entering_view45"},
+    {SamplingRoutine::RoughDielectricMaterial,
+     0.3f,
+     80.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "dielectric_a03_entering_view80"},
+    {SamplingRoutine::RoughDielectricMaterial,
+     0.3f,
+     30.0f,
+     false,
+     1.0f,
+     {0, 0, 1},
+     "dielectric_a03_leaving_view30"},
+    {SamplingRoutine::RoughDielectricMaterial,
+     0.3f,
+     60.0f,
+     false,
+     1.0f,
+     {0, 0, 1},
+     "dielectric_a03_leaving_view60"},
+    {SamplingRoutine::RoughDielectricMaterial,
+     1.0f,
+     0.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "dielectric_a1_entering_normal_view"},
+    {SamplingRoutine::RoughDielectricMaterial,
+     1.0f,
+     80.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "dielectric_a1_entering_view80"},
+    {SamplingRoutine::RoughDielectricMaterial,
+     1.0f,
+     30.0f,
+     false,
+     1.0f,
+     {1, 2, 3},
+     "dielectric_a1_leaving_view30_tilted_normal"},
+    {SamplingRoutine::RoughDielectricMaterial,
+     1.0f,
+     60.0f,
+     false,
+     1.0f,
+     {0, 0, 1},
+     "dielectric_a1_leaving_view60"},
 };
 
 std::string roughName(const ::testing::TestParamInfo<RoughCase>& info)
@@ -522,10 +654,9 @@ TEST_P(RoughMaterialWeights, SampleWeightsAverageToTheIntegralOfEvaluate)
     double squares = 0.0;
     double count = 0.0;
     for (int draw = 0; draw < kDraws; ++draw)
-        for (const glm::vec4& weight :
-             sampler.sampleWeights(samplingCase, kSampleSide, kSampleSide,
-                                   3000 + static_cast<std::uint64_t>(draw),
-                                   SamplerChoice{true, false, draw, 4})) {
+        for (const glm::vec4& weight : sampler.sampleWeights(
+                 samplingCase, kSampleSide, kSampleSide, 3000 + static_cast<std::uint64_t>(draw),
+                 SamplerChoice{true, false, draw, 4})) {
             const double value = (weight.x + weight.y + weight.z) / 3.0;
             sum += value;
             squares += value * value;
@@ -543,12 +674,48 @@ TEST_P(RoughMaterialWeights, SampleWeightsAverageToTheIntegralOfEvaluate)
 }
 
 const RoughCase kRoughWeightCases[] = {
-    {SamplingRoutine::RoughConductorMaterial, 0.05f, 45.0f, true, 1.0f, {0, 0, 1}, "conductor_a005_view45"},
-    {SamplingRoutine::RoughConductorMaterial, 0.3f, 80.0f, true, 1.0f, {0, 0, 1}, "conductor_a03_view80"},
-    {SamplingRoutine::RoughConductorMaterial, 1.0f, 0.0f, true, 0.5f, {1, 2, 3}, "conductor_a1_normal_view_tinted"},
-    {SamplingRoutine::RoughDielectricMaterial, 0.05f, 45.0f, true, 1.0f, {0, 0, 1}, "dielectric_a005_entering_view45"},
-    {SamplingRoutine::RoughDielectricMaterial, 0.3f, 30.0f, false, 1.0f, {0, 0, 1}, "dielectric_a03_leaving_view30"},
-    {SamplingRoutine::RoughDielectricMaterial, 1.0f, 60.0f, true, 1.0f, {0, 0, 1}, "dielectric_a1_entering_view60"},
+    {SamplingRoutine::RoughConductorMaterial,
+     0.05f,
+     45.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "conductor_a005_view45"},
+    {SamplingRoutine::RoughConductorMaterial,
+     0.3f,
+     80.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "conductor_a03_view80"},
+    {SamplingRoutine::RoughConductorMaterial,
+     1.0f,
+     0.0f,
+     true,
+     0.5f,
+     {1, 2, 3},
+     "conductor_a1_normal_view_tinted"},
+    {SamplingRoutine::RoughDielectricMaterial,
+     0.05f,
+     45.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "dielectric_a005_entering_view45"},
+    {SamplingRoutine::RoughDielectricMaterial,
+     0.3f,
+     30.0f,
+     false,
+     1.0f,
+     {0, 0, 1},
+     "dielectric_a03_leaving_view30"},
+    {SamplingRoutine::RoughDielectricMaterial,
+     1.0f,
+     60.0f,
+     true,
+     1.0f,
+     {0, 0, 1},
+     "dielectric_a1_entering_view60"},
 };
 
 INSTANTIATE_TEST_SUITE_P(Ggx, RoughMaterialWeights, ::testing::ValuesIn(kRoughWeightCases),
@@ -574,7 +741,9 @@ GridLayout environmentGrid(const render::EnvironmentMap& map, float rotationDegr
     const float c = std::cos(angle);
     const float s = std::sin(angle);
     // The map's frame turned about +y (x' = c x + s z, z' = -s x + c z).
-    auto turned = [&](const glm::vec3& m) { return glm::vec3(c * m.x + s * m.z, m.y, -s * m.x + c * m.z); };
+    auto turned = [&](const glm::vec3& m) {
+        return glm::vec3(c * m.x + s * m.z, m.y, -s * m.x + c * m.z);
+    };
     GridLayout grid;
     grid.thetaCells = map.height * split;
     grid.phiCells = map.width * split;
@@ -594,8 +763,7 @@ EnvironmentCase environmentCase(int which)
         SkyWithSun sky;
         sky.sunRadiusDegrees = 8.0;
         sky.sunRadiance = 40.0;
-        return {"sky_with_sun_turned_30_degrees", skyWithSunEnvironmentMap(64, 32, sky), 30.0f,
-                2};
+        return {"sky_with_sun_turned_30_degrees", skyWithSunEnvironmentMap(64, 32, sky), 30.0f, 2};
     }
     case 1:
         return {"octants", octantEnvironmentMap(32, 16), 0.0f, 2};

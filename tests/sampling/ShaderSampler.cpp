@@ -40,8 +40,8 @@ shadergen::ShaderSource probeSource()
                "#define ENVIRONMENT_KIND ENVIRONMENT_MAP\n" +
                    shadergen::shaderCodeDefines());
     const std::vector<std::string> modules = {
-        "constants.glsl",  "rng.glsl",         "sampler.glsl",          "sampling.glsl",
-        "scene_data.glsl", "fresnel.glsl",     "ggx_albedo_table.glsl", "microfacet.glsl",
+        "constants.glsl",  "rng.glsl",        "sampler.glsl",          "sampling.glsl",
+        "scene_data.glsl", "fresnel.glsl",    "ggx_albedo_table.glsl", "microfacet.glsl",
         "materials.glsl",  "environment.glsl"};
     source.add("<generated: the uniforms, read once per pixel>",
                shadergen::uniformBlock(render::pathTracerUniformDeclarations(), modules));
@@ -65,9 +65,8 @@ gl::Program compileProbe()
 
 ShaderSampler::ShaderSampler() : program_(compileProbe()) {}
 
-std::vector<glm::vec4> ShaderSampler::draw(int mode, const SamplingCase& samplingCase,
-                                           int width, int height, std::uint64_t seed,
-                                           const GridLayout& grid,
+std::vector<glm::vec4> ShaderSampler::draw(int mode, const SamplingCase& samplingCase, int width,
+                                           int height, std::uint64_t seed, const GridLayout& grid,
                                            const SamplerChoice& choice) const
 {
     const gl::Texture target =
@@ -78,9 +77,9 @@ std::vector<glm::vec4> ShaderSampler::draw(int mode, const SamplingCase& samplin
     program_.use();
     auto location = [&](const char* name) { return program_.uniformLocation(name); };
     glUniform1i(location("uMode"), mode);
-    glUniform1i(location("uSampler"), settings::choiceCode(choice.sobol
-                                                               ? settings::SamplerKind::Sobol
-                                                               : settings::SamplerKind::Independent));
+    glUniform1i(location("uSampler"),
+                settings::choiceCode(choice.sobol ? settings::SamplerKind::Sobol
+                                                  : settings::SamplerKind::Independent));
     glUniform2ui(location("uSeed"), static_cast<GLuint>(seed), static_cast<GLuint>(seed >> 32));
     glUniform1i(location("uSequence"), choice.onePixelSequence ? 1 : 0);
     glUniform1i(location("uSampleIndex"), choice.sampleIndex);
@@ -96,7 +95,8 @@ std::vector<glm::vec4> ShaderSampler::draw(int mode, const SamplingCase& samplin
     glUniform2f(location("uGridCells"), static_cast<float>(grid.thetaCells),
                 static_cast<float>(grid.phiCells));
     glUniform1f(location("uGridThetaMax"), grid.thetaMax);
-    glUniform1i(location("uDielectricFresnel"), settings::choiceCode(settings::FresnelModel::Schlick));
+    glUniform1i(location("uDielectricFresnel"),
+                settings::choiceCode(settings::FresnelModel::Schlick));
     glUniform1f(location("uRoughness"), samplingCase.roughness);
     glUniform1f(location("uIor"), samplingCase.ior);
     glUniform1i(location("uEntering"), samplingCase.entering ? 1 : 0);
@@ -125,8 +125,8 @@ std::vector<glm::vec4> ShaderSampler::draw(int mode, const SamplingCase& samplin
     return values;
 }
 
-std::vector<glm::vec4> ShaderSampler::sampleDirections(const SamplingCase& samplingCase,
-                                                       int width, int height, std::uint64_t seed,
+std::vector<glm::vec4> ShaderSampler::sampleDirections(const SamplingCase& samplingCase, int width,
+                                                       int height, std::uint64_t seed,
                                                        const SamplerChoice& choice) const
 {
     return draw(0, samplingCase, width, height, seed, GridLayout{}, choice);

@@ -14,13 +14,13 @@ namespace sampling_tests {
 
 // Values of the probe's uRoutine.
 enum class SamplingRoutine {
-    CosineHemisphere = 0,     // sampleCosineHemisphere / cosineHemispherePdf, local frame
-    UniformCone = 1,          // sampleUniformCone / uniformConePdf, local frame
-    BlinnPhongHalfVector = 2,  // sampleBlinnPhongHalfVector / blinnPhongHalfVectorPdf, local
-    BlinnPhongMaterial = 3,   // blinnPhongSample / blinnPhongPdf / blinnPhongEvaluate, world
+    CosineHemisphere = 0,         // sampleCosineHemisphere / cosineHemispherePdf, local frame
+    UniformCone = 1,              // sampleUniformCone / uniformConePdf, local frame
+    BlinnPhongHalfVector = 2,     // sampleBlinnPhongHalfVector / blinnPhongHalfVectorPdf, local
+    BlinnPhongMaterial = 3,       // blinnPhongSample / blinnPhongPdf / blinnPhongEvaluate, world
     RoughConductorMaterial = 4,   // roughConductorSample / Pdf / Evaluate, world
     RoughDielectricMaterial = 5,  // roughDielectricSample / Pdf / Evaluate, world
-    EnvironmentMap = 6,       // sampleEnvironmentMap / environmentMapPdf, world
+    EnvironmentMap = 6,           // sampleEnvironmentMap / environmentMapPdf, world
 };
 
 struct SamplingCase {
@@ -67,8 +67,8 @@ public:
     // width x height samples, one per fragment, its numbers drawn by the renderer's sampler
     // for `seed` as `choice` says. x, y, z: the direction; w: its pdf, or -1 where the
     // routine returned no sample.
-    std::vector<glm::vec4> sampleDirections(const SamplingCase& samplingCase, int width,
-                                            int height, std::uint64_t seed,
+    std::vector<glm::vec4> sampleDirections(const SamplingCase& samplingCase, int width, int height,
+                                            std::uint64_t seed,
                                             const SamplerChoice& choice = {}) const;
 
     // The material's sample weights f cos / pdf (xyz; w = 1, or all zero for no sample).
@@ -93,8 +93,8 @@ public:
                                              const GridLayout& grid) const;
 
 private:
-    std::vector<glm::vec4> draw(int mode, const SamplingCase& samplingCase, int width,
-                                int height, std::uint64_t seed, const GridLayout& grid,
+    std::vector<glm::vec4> draw(int mode, const SamplingCase& samplingCase, int width, int height,
+                                std::uint64_t seed, const GridLayout& grid,
                                 const SamplerChoice& choice) const;
 
     gl::Program program_;

@@ -59,8 +59,9 @@ TEST(KindCodes, NoShaderModuleDeclaresACodeOfItsOwn)
           "lights.glsl", "materials.glsl", "pigments.glsl", "ray_queries_traced.glsl",
           "scene_data.glsl", "sdf_primitives.glsl", "shape_interpreter.glsl"})
         EXPECT_FALSE(std::regex_search(readModule(module), copiedCode))
-            << module << " writes a kind's code as a number: it must come from the generated "
-                         "#defines (shadergen/ShaderCodes.h)";
+            << module
+            << " writes a kind's code as a number: it must come from the generated "
+               "#defines (shadergen/ShaderCodes.h)";
 }
 
 // --- CSG operators ----------------------------------------------------------------------
@@ -79,14 +80,13 @@ TEST(CsgOperatorKinds, EachIsParsedFromItsOwnWordsWhichTheParserReserves)
 {
     std::set<std::string> spellings;
     for (const CsgOperatorDescription& op : csgOperatorDescriptions()) {
-        const std::string words = std::string(op.keyword) +
-                                  (op.hasParameter() ? " " + std::string(op.smoothingWord) + " 0.5"
-                                                     : "");
+        const std::string words =
+            std::string(op.keyword) +
+            (op.hasParameter() ? " " + std::string(op.smoothingWord) + " 0.5" : "");
         EXPECT_TRUE(spellings.insert(words).second) << words << " twice";
         EXPECT_TRUE(isReservedShapeWord(op.keyword)) << op.keyword;
         EXPECT_EQ(op.hasParameter(), *op.smoothingWord != '\0') << op.identifier;
-        const Scene scene =
-            parse(oneObject(words + " { sphere 0 0 0 1 sphere 1 0 0 1 }"));
+        const Scene scene = parse(oneObject(words + " { sphere 0 0 0 1 sphere 1 0 0 1 }"));
         const auto& node = std::get<CsgNode>(scene.objects.at(0).shape.geometry);
         EXPECT_EQ(node.op, op.op) << words;
         EXPECT_EQ(node.parameter, op.hasParameter() ? 0.5f : 0.0f) << words;
@@ -167,8 +167,8 @@ TEST(MaterialKinds, EachKeywordFinishIsParsedFromItsKeywordAndHasAReader)
         EXPECT_NE(finishKeywords().find(material.keyword), std::string::npos);
         const auto example = numbers.find(material.keyword);
         ASSERT_NE(example, numbers.end()) << material.keyword << ": this test has no example";
-        const Scene scene = parse(oneObject("sphere 0 0 0 1", "solid 1 1 1",
-                                            material.keyword + (" " + example->second)));
+        const Scene scene = parse(
+            oneObject("sphere 0 0 0 1", "solid 1 1 1", material.keyword + (" " + example->second)));
         EXPECT_EQ(scene.finishes.at(0).material(), material.kind) << material.keyword;
     }
 }

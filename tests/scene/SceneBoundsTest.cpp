@@ -40,20 +40,20 @@ TEST(SceneBounds, HoldCameraLightsAndEveryFiniteShape)
 
 TEST(SceneBounds, ReachThePointOfEachPlaneNearestTheCamera)
 {
-    const SceneBounds bounds = computeSceneBounds(
-        parse(sceneWithObjects(1, "0 0 polyhedron 1  0 1 0 40\n")));
+    const SceneBounds bounds =
+        computeSceneBounds(parse(sceneWithObjects(1, "0 0 polyhedron 1  0 1 0 40\n")));
     EXPECT_TRUE(contains(bounds, {0.0f, -40.0f, 5.0f}))
         << "the plane y = -40 is nearest the camera (0, 0, 5) at (0, -40, 5)";
 }
 
 TEST(SceneBounds, ScaleTheFarDistanceAndTheHitFloor)
 {
-    const SceneBounds small = computeSceneBounds(
-        parse("0 0 0.005\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n1 0 0 0 0 0 0 0\n"
-              "1\n0 0 sphere 0 0 0 0.001\n"));
-    const SceneBounds large = computeSceneBounds(
-        parse("0 0 5000\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n1 0 0 0 0 0 0 0\n"
-              "1\n0 0 sphere 0 0 0 1000\n"));
+    const SceneBounds small =
+        computeSceneBounds(parse("0 0 0.005\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n1 0 0 0 0 0 0 0\n"
+                                 "1\n0 0 sphere 0 0 0 0.001\n"));
+    const SceneBounds large =
+        computeSceneBounds(parse("0 0 5000\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n1 0 0 0 0 0 0 0\n"
+                                 "1\n0 0 sphere 0 0 0 1000\n"));
     EXPECT_FLOAT_EQ(small.farDistance(), 100.0f * small.radius);
     EXPECT_NEAR(large.farDistance() / small.farDistance(), 1e6, 1e3)
         << "a scene a million times larger has a far distance a million times larger";
@@ -130,7 +130,8 @@ TEST(ShapeBounds, DifferenceIsBoundedByItsFirstChild)
 TEST(ShapeBounds, SmoothUnionGrowsByTheBlendMargin)
 {
     const ShapeBound sharp = boundOf("0 0 union { sphere -1 0 0 1 sphere 1 0 0 1 }\n");
-    const ShapeBound smooth = boundOf("0 0 smooth_union exp 4 { sphere -1 0 0 1 sphere 1 0 0 1 }\n");
+    const ShapeBound smooth =
+        boundOf("0 0 smooth_union exp 4 { sphere -1 0 0 1 sphere 1 0 0 1 }\n");
     // The exponential smooth-min lies below the min by at most log(children) / k.
     EXPECT_NEAR(smooth.radius - sharp.radius, std::log(2.0f) / 4.0f, 1e-5f);
 }
@@ -159,8 +160,8 @@ TEST(NearestBoundHit, MeetsSpheresAndWallsFromOutsideAndPassesThoseTheOriginIsIn
 TEST(NearestBoundHit, FollowsTransformsAndCsgOperands)
 {
     // A union of two balls, moved 10 along x by a transform.
-    const Scene scene = parse(sceneWithObjects(
-        1, "0 0 translate 10 0 0 union { sphere 0 0 -5 1  sphere 0 0 -9 1 }\n"));
+    const Scene scene = parse(
+        sceneWithObjects(1, "0 0 translate 10 0 0 union { sphere 0 0 -5 1  sphere 0 0 -9 1 }\n"));
     const ObjectBounds bounds = objectBounds(scene);
     EXPECT_EQ(bounds.spheres.size(), 2u) << "a union is its children";
     EXPECT_NEAR(nearestBoundHit(bounds, {10, 0, 0}, {0, 0, -1}).value_or(-1.0f), 4.0f, 1e-4f);

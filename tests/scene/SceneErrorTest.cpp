@@ -23,17 +23,15 @@ TEST(SceneErrors, EmptyFileIsAnError)
 
 TEST(SceneErrors, FewerObjectsThanTheCountSaysIsAnError)
 {
-    EXPECT_TRUE(failsAt(sceneWithObjects(3,
-                                         "0 0 sphere 0 0 0 1\n"
-                                         "0 0 sphere 0 2 0 1\n"),
+    EXPECT_TRUE(failsAt(sceneWithObjects(3, "0 0 sphere 0 0 0 1\n"
+                                            "0 0 sphere 0 2 0 1\n"),
                         14, "", "pigment index"));
 }
 
 TEST(SceneErrors, MoreObjectsThanTheCountSaysIsAnError)
 {
-    EXPECT_TRUE(failsAt(sceneWithObjects(1,
-                                         "0 0 sphere 0 0 0 1\n"
-                                         "0 0 sphere 0 2 0 1\n"),
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 sphere 0 0 0 1\n"
+                                            "0 0 sphere 0 2 0 1\n"),
                         14, "0", "the end of the file"));
 }
 
@@ -47,9 +45,8 @@ TEST(SceneErrors, MorePigmentsThanTheCountSaysIsAnError)
 
 TEST(SceneErrors, PigmentIndexOutOfRangeNamesTheIndex)
 {
-    EXPECT_TRUE(failsAt(sceneWithObjects(2,
-                                         "0 0 sphere 0 0 0 1\n"
-                                         "2 0 sphere 0 2 0 1\n"),
+    EXPECT_TRUE(failsAt(sceneWithObjects(2, "0 0 sphere 0 0 0 1\n"
+                                            "2 0 sphere 0 2 0 1\n"),
                         14, "2", "a pigment index from 0 to 1"));
 }
 
@@ -73,50 +70,48 @@ TEST(SceneErrors, IndexIntoAnEmptyListSaysThereIsNone)
 
 TEST(SceneErrors, UnknownObjectTypeThatCannotNameAFunctionIsAnError)
 {
-    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 3d-sphere 0 0 0 1\n"), 13, "3d-sphere",
-                        "an object type"));
+    EXPECT_TRUE(
+        failsAt(sceneWithObjects(1, "0 0 3d-sphere 0 0 0 1\n"), 13, "3d-sphere", "an object type"));
 }
 
 TEST(SceneErrors, UnknownObjectTypeWithoutAShaderFileIsAMissingUserSdf)
 {
-    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 sphre 0 0 0 1\n"), 13, "sphre",
-                        "sphre.glsl"));
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 sphre 0 0 0 1\n"), 13, "sphre", "sphre.glsl"));
 }
 
 TEST(SceneErrors, MissingUserSdfFileNamesTheFoldersSearched)
 {
-    EXPECT_TRUE(failsAt(sceneWithObjects(1, "\n0 0 no_such_shape 1 2 3\n"), 14,
-                        "no_such_shape", "looked in"));
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "\n0 0 no_such_shape 1 2 3\n"), 14, "no_such_shape",
+                        "looked in"));
 }
 
 TEST(SceneErrors, NegativeSphereRadiusIsAnError)
 {
-    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 sphere 0 0 0\n-1\n"), 14, "-1",
-                        "sphere radius"));
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 sphere 0 0 0\n-1\n"), 14, "-1", "sphere radius"));
 }
 
 TEST(SceneErrors, NegativeTorusRadiusIsAnError)
 {
-    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 torus 0 0 0 -2 0.5\n"), 13, "-2",
-                        "torus major radius"));
+    EXPECT_TRUE(
+        failsAt(sceneWithObjects(1, "0 0 torus 0 0 0 -2 0.5\n"), 13, "-2", "torus major radius"));
 }
 
 TEST(SceneErrors, NegativeCylinderRadiusIsAnError)
 {
-    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 cylinder 0 0 0 -0.5 1\n"), 13, "-0.5",
-                        "cylinder radius"));
+    EXPECT_TRUE(
+        failsAt(sceneWithObjects(1, "0 0 cylinder 0 0 0 -0.5 1\n"), 13, "-0.5", "cylinder radius"));
 }
 
 TEST(SceneErrors, NegativeDiskRadiusIsAnError)
 {
-    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 disk 0 0 0  0 1 0  -3\n"), 13, "-3",
-                        "disk radius"));
+    EXPECT_TRUE(
+        failsAt(sceneWithObjects(1, "0 0 disk 0 0 0  0 1 0  -3\n"), 13, "-3", "disk radius"));
 }
 
 TEST(SceneErrors, NegativeBoxExtentIsAnError)
 {
-    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 box 0 0 0  1 -1 1\n"), 13, "-1",
-                        "box half-extent y"));
+    EXPECT_TRUE(
+        failsAt(sceneWithObjects(1, "0 0 box 0 0 0  1 -1 1\n"), 13, "-1", "box half-extent y"));
 }
 
 TEST(SceneErrors, MissingTextureFileNamesTheFile)
@@ -127,22 +122,21 @@ TEST(SceneErrors, MissingTextureFileNamesTheFile)
 
 TEST(SceneErrors, UnknownPigmentKindIsAnError)
 {
-    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45\n0\n2\nsolid 1 1 1\nmarble 1 1 1\n", 8,
-                        "marble", "solid, checker or texmap"));
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45\n0\n2\nsolid 1 1 1\nmarble 1 1 1\n", 8, "marble",
+                        "solid, checker or texmap"));
 }
 
 TEST(SceneErrors, EmissionOnANonSphereIsAnError)
 {
-    EXPECT_TRUE(failsAt(sceneWithObjects(2,
-                                         "0 1 sphere 0 3 0 0.5\n"
-                                         "0 1 box 0 0 0 1 1 1\n"),
+    EXPECT_TRUE(failsAt(sceneWithObjects(2, "0 1 sphere 0 3 0 0.5\n"
+                                            "0 1 box 0 0 0 1 1 1\n"),
                         14, "box", "only spheres may emit"));
 }
 
 TEST(SceneErrors, EmissionOnACsgBlockIsAnError)
 {
-    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 1 union { sphere 0 0 0 1 sphere 1 0 0 1 }\n"),
-                        13, "union", "only spheres may emit"));
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 1 union { sphere 0 0 0 1 sphere 1 0 0 1 }\n"), 13,
+                        "union", "only spheres may emit"));
 }
 
 TEST(SceneErrors, NonNumericTokenWhereANumberBelongsIsAnError)
@@ -152,8 +146,7 @@ TEST(SceneErrors, NonNumericTokenWhereANumberBelongsIsAnError)
 
 TEST(SceneErrors, NumberWithTrailingCharactersIsNotANumber)
 {
-    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45deg\n", 4, "45deg",
-                        "vertical field of view"));
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45deg\n", 4, "45deg", "vertical field of view"));
 }
 
 TEST(SceneErrors, FractionalCountIsAnError)
@@ -168,8 +161,7 @@ TEST(SceneErrors, NegativeCountIsAnError)
 
 TEST(SceneErrors, NegativeLightIntensityIsAnError)
 {
-    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45\n1\n0 4 0  10 -10 10\n", 6, "-10",
-                        "intensity"));
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45\n1\n0 4 0  10 -10 10\n", 6, "-10", "intensity"));
 }
 
 TEST(SceneErrors, UpVectorParallelToTheViewDirectionIsAnError)
@@ -234,8 +226,8 @@ TEST(SceneErrorSuggestions, AMisspeltPigmentKindIsAnsweredWithTheNearestKeyword)
 TEST(SceneErrorSuggestions, AMisspeltEnvironmentIsAnsweredWithTheNearestKeyword)
 {
     EXPECT_TRUE(failsAt("environment nnoe\n0 0 5\n", 1, "nnoe", "(did you mean 'none'?)"));
-    EXPECT_TRUE(failsAt("enviroment none\n0 0 5\n", 1, "enviroment",
-                        "(did you mean 'environment'?)"));
+    EXPECT_TRUE(
+        failsAt("enviroment none\n0 0 5\n", 1, "enviroment", "(did you mean 'environment'?)"));
 }
 
 TEST(SceneErrorSuggestions, AWordFarFromEveryKeywordIsOnlyRefused)
@@ -254,8 +246,8 @@ TEST(SceneErrorSuggestions, AWordFarFromEveryKeywordIsOnlyRefused)
 TEST(CameraText, ReadsTheFilesCameraLineWithOrWithoutItsWords)
 {
     const scene::Camera bare = scene::parseCameraText("1 2 3  4 5 6  0 0 1  40", "--camera");
-    const scene::Camera worded = scene::parseCameraText(
-        "eye 1 2 3 look-at 4 5 6 up 0 0 1 fov 40 lens 0.1 5", "--camera");
+    const scene::Camera worded =
+        scene::parseCameraText("eye 1 2 3 look-at 4 5 6 up 0 0 1 fov 40 lens 0.1 5", "--camera");
     EXPECT_EQ(bare.eye, glm::vec3(1, 2, 3));
     EXPECT_EQ(bare.target, glm::vec3(4, 5, 6));
     EXPECT_EQ(bare.up, glm::vec3(0, 0, 1));

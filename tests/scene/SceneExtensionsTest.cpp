@@ -18,8 +18,8 @@ using namespace scene;
     if (glm::all(glm::epsilonEqual(actual, expected, 1e-5f)))
         return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure()
-           << "expected (" << expected.x << ", " << expected.y << ", " << expected.z
-           << "), got (" << actual.x << ", " << actual.y << ", " << actual.z << ")";
+           << "expected (" << expected.x << ", " << expected.y << ", " << expected.z << "), got ("
+           << actual.x << ", " << actual.y << ", " << actual.z << ")";
 }
 
 const Shape& onlyShape(const Scene& scene)
@@ -52,8 +52,7 @@ std::string withEnvironment(const std::string& keyword)
 
 TEST(SceneEnvironment, NoneMeansBlack)
 {
-    EXPECT_EQ(parse(withEnvironment("environment none")).environment.kind,
-              EnvironmentKind::None);
+    EXPECT_EQ(parse(withEnvironment("environment none")).environment.kind, EnvironmentKind::None);
 }
 
 TEST(SceneEnvironment, SkyIsTheDefaultGradient)
@@ -108,7 +107,8 @@ TEST(SceneEnvironment, AMapIsAFileFoundAsATextureIsWithAnIntensityAndARotation)
 
 TEST(SceneEnvironment, AMapTakesIntensityOneAndNoRotationUnlessTold)
 {
-    const Scene scene = parse(sceneWithObjects(1, "0 0 sphere 0 0 0 1\nenvironment map sky-sun.hdr\n"));
+    const Scene scene =
+        parse(sceneWithObjects(1, "0 0 sphere 0 0 0 1\nenvironment map sky-sun.hdr\n"));
     EXPECT_EQ(scene.environment.intensity, 1.0f);
     EXPECT_EQ(scene.environment.rotationDegrees, 0.0f);
 }
@@ -149,8 +149,8 @@ class CsgBlock : public ::testing::TestWithParam<CsgSpelling> {};
 TEST_P(CsgBlock, ParsesToItsOperatorAndParameter)
 {
     const CsgSpelling spelling = GetParam();
-    const Scene scene = parse(sceneWithObjects(
-        1, std::string("0 0 ") + spelling.written + " { sphere 0 0 0 1 box 1 0 0 1 1 1 }\n"));
+    const Scene scene = parse(sceneWithObjects(1, std::string("0 0 ") + spelling.written +
+                                                      " { sphere 0 0 0 1 box 1 0 0 1 1 1 }\n"));
     const CsgNode& node = csgOf(scene);
     EXPECT_EQ(node.op, spelling.op) << spelling.written;
     EXPECT_FLOAT_EQ(node.parameter, spelling.parameter);
@@ -161,20 +161,17 @@ TEST_P(CsgBlock, ParsesToItsOperatorAndParameter)
 
 INSTANTIATE_TEST_SUITE_P(
     Operator, CsgBlock,
-    ::testing::Values(CsgSpelling{"union", CsgOperator::Union, 0.0f},
-                      CsgSpelling{"intersection", CsgOperator::Intersection, 0.0f},
-                      CsgSpelling{"difference", CsgOperator::Difference, 0.0f},
-                      CsgSpelling{"smooth_union exp 8", CsgOperator::SmoothUnion, 8.0f},
-                      CsgSpelling{"smooth_intersection exp 4",
-                                  CsgOperator::SmoothIntersection, 4.0f},
-                      CsgSpelling{"smooth_difference exp 16", CsgOperator::SmoothDifference,
-                                  16.0f},
-                      CsgSpelling{"smooth_union poly 0.3", CsgOperator::PolynomialSmoothUnion,
-                                  0.3f},
-                      CsgSpelling{"smooth_intersection poly 0.2",
-                                  CsgOperator::PolynomialSmoothIntersection, 0.2f},
-                      CsgSpelling{"smooth_difference poly 0.1",
-                                  CsgOperator::PolynomialSmoothDifference, 0.1f}),
+    ::testing::Values(
+        CsgSpelling{"union", CsgOperator::Union, 0.0f},
+        CsgSpelling{"intersection", CsgOperator::Intersection, 0.0f},
+        CsgSpelling{"difference", CsgOperator::Difference, 0.0f},
+        CsgSpelling{"smooth_union exp 8", CsgOperator::SmoothUnion, 8.0f},
+        CsgSpelling{"smooth_intersection exp 4", CsgOperator::SmoothIntersection, 4.0f},
+        CsgSpelling{"smooth_difference exp 16", CsgOperator::SmoothDifference, 16.0f},
+        CsgSpelling{"smooth_union poly 0.3", CsgOperator::PolynomialSmoothUnion, 0.3f},
+        CsgSpelling{"smooth_intersection poly 0.2", CsgOperator::PolynomialSmoothIntersection,
+                    0.2f},
+        CsgSpelling{"smooth_difference poly 0.1", CsgOperator::PolynomialSmoothDifference, 0.1f}),
     [](const ::testing::TestParamInfo<CsgSpelling>& info) {
         std::string name = info.param.written;
         for (char& c : name)
@@ -231,13 +228,15 @@ TEST(CsgBlocks, ExponentialSharpnessMustBePositive)
 // One object whose shape is `line` two blocks deep, on line 17 of the file.
 std::string twoBlocksDeep(const std::string& line)
 {
-    return sceneWithObjects(1, "0 0 union {\n"              // 13
-                               "  sphere 0 0 0 1\n"         // 14
-                               "  difference {\n"           // 15
-                               "    box 0 0 0 1 1 1\n"      // 16
-                               "    " + line + "\n"         // 17
-                               "  }\n"                      // 18
-                               "}\n");                      // 19
+    return sceneWithObjects(1, "0 0 union {\n"          // 13
+                               "  sphere 0 0 0 1\n"     // 14
+                               "  difference {\n"       // 15
+                               "    box 0 0 0 1 1 1\n"  // 16
+                               "    " +
+                                   line +
+                                   "\n"     // 17
+                                   "  }\n"  // 18
+                                   "}\n");  // 19
 }
 
 // One object whose shape is `line` three blocks deep, on line 19 of the file, after one
@@ -250,10 +249,12 @@ std::string threeBlocksDeep(const std::string& line)
                                "    box 0 0 0 1 1 1\n"       // 16
                                "    intersection {\n"        // 17
                                "      sphere 0 0 0 1.2\n"    // 18
-                               "      " + line + "\n"        // 19
-                               "    }\n"                     // 20
-                               "  }\n"                       // 21
-                               "}\n");                       // 22
+                               "      " +
+                                   line +
+                                   "\n"       // 19
+                                   "    }\n"  // 20
+                                   "  }\n"    // 21
+                                   "}\n");    // 22
 }
 
 TEST(NestedCsgErrors, LayoutsAreValidAroundASoundShape)
@@ -264,14 +265,14 @@ TEST(NestedCsgErrors, LayoutsAreValidAroundASoundShape)
 
 TEST(NestedCsgErrors, WordForANumberTwoBlocksDeepNamesItsLineAndToken)
 {
-    EXPECT_TRUE(failsAt(twoBlocksDeep("sphere 0 0 zero 1"), 17, "zero",
-                        "a number (sphere centre, z)"));
+    EXPECT_TRUE(
+        failsAt(twoBlocksDeep("sphere 0 0 zero 1"), 17, "zero", "a number (sphere centre, z)"));
 }
 
 TEST(NestedCsgErrors, WordForANumberThreeBlocksDeepNamesItsLineAndToken)
 {
-    EXPECT_TRUE(failsAt(threeBlocksDeep("sphere 0 0 zero 1"), 19, "zero",
-                        "a number (sphere centre, z)"));
+    EXPECT_TRUE(
+        failsAt(threeBlocksDeep("sphere 0 0 zero 1"), 19, "zero", "a number (sphere centre, z)"));
 }
 
 TEST(NestedCsgErrors, NegativeRadiusThreeBlocksDeepNamesItsLineAndToken)
@@ -356,7 +357,8 @@ TEST(Transforms, ScaleIsUniformAboutTheOrigin)
 
 TEST(Transforms, WrittenOutermostFirstApplyInnermostFirst)
 {
-    const Scene scene = parse(sceneWithObjects(1, "0 0 translate 1 0 0 scale 2 rotate 0 0 1 90 sphere 0 0 0 1\n"));
+    const Scene scene =
+        parse(sceneWithObjects(1, "0 0 translate 1 0 0 scale 2 rotate 0 0 1 90 sphere 0 0 0 1\n"));
     const Shape& shape = onlyShape(scene);
     ASSERT_TRUE(shape.transform.has_value());
     // (1, 0, 0) turned to (0, 1, 0), doubled, then moved by +x.
@@ -376,8 +378,7 @@ TEST(Transforms, ApplyToCsgBlocksAndInsideThem)
 
 TEST(Transforms, NonPositiveScaleIsAnError)
 {
-    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 scale -2 sphere 0 0 0 1\n"), 13, "-2",
-                        "scale"));
+    EXPECT_TRUE(failsAt(sceneWithObjects(1, "0 0 scale -2 sphere 0 0 0 1\n"), 13, "-2", "scale"));
 }
 
 TEST(Transforms, ZeroRotationAxisIsAnError)
@@ -403,9 +404,10 @@ class UserSdfFiles : public ::testing::Test {
 protected:
     void SetUp() override
     {
-        folder_ = std::filesystem::temp_directory_path() /
-                  ("scene-tests-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                   "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        folder_ =
+            std::filesystem::temp_directory_path() /
+            ("scene-tests-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+             "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
         std::filesystem::create_directories(folder_);
     }
     void TearDown() override { std::filesystem::remove_all(folder_); }
@@ -445,7 +447,8 @@ TEST_F(UserSdfFiles, WithoutDeclarationsAreUnboundedAndOneLipschitz)
 
 TEST_F(UserSdfFiles, AreFoundBesideTheSceneBeforeTheProjectShaders)
 {
-    write("knot.glsl", "// @bound 0.75\nfloat knot(vec3 p, vec3 x) { return length(p - x) - 0.5; }\n");
+    write("knot.glsl",
+          "// @bound 0.75\nfloat knot(vec3 p, vec3 x) { return length(p - x) - 0.5; }\n");
     const UserSdf user = parseUserSdf("knot");
     EXPECT_EQ(user.sourcePath, folder_ / "knot.glsl");
     EXPECT_FLOAT_EQ(user.boundingRadius.value_or(0.0f), 0.75f);
@@ -460,7 +463,8 @@ TEST_F(UserSdfFiles, AreFoundInAShadersFolderBesideTheScene)
 
 TEST_F(UserSdfFiles, DeclarationWrittenAgainstTheCommentMarkIsStillRead)
 {
-    write("blob.glsl", "//@bound 1.5\nfloat blob(vec3 p, vec3 x) { return length(p - x) - 1.0; }\n");
+    write("blob.glsl",
+          "//@bound 1.5\nfloat blob(vec3 p, vec3 x) { return length(p - x) - 1.0; }\n");
     EXPECT_FLOAT_EQ(parseUserSdf("blob").boundingRadius.value_or(0.0f), 1.5f);
 }
 
@@ -512,9 +516,9 @@ TEST(UserSdfDeclarations, TheProjectKnotReturnsItsOwnSafeBound)
 
 TEST(UserSdfDeclarations, ReservedWordsCannotNameAUserSdf)
 {
-    for (const char* word : {"sphere", "polyhedron", "box", "torus", "cone", "cylinder", "disk",
-                             "union", "intersection", "difference", "smooth_union",
-                             "translate", "rotate", "scale"})
+    for (const char* word :
+         {"sphere", "polyhedron", "box", "torus", "cone", "cylinder", "disk", "union",
+          "intersection", "difference", "smooth_union", "translate", "rotate", "scale"})
         EXPECT_TRUE(isReservedShapeWord(word)) << word;
     EXPECT_FALSE(isReservedShapeWord("knot"));
 }
@@ -530,8 +534,8 @@ namespace {
 // One white ball with the given finishes (the object takes finish 0), written on line 6.
 std::string withFinishes(int count, const std::string& finishes)
 {
-    return "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n" + std::to_string(count) + "\n" +
-           finishes + "\n1\n0 0 sphere 0 0 0 1\n";
+    return "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n" + std::to_string(count) + "\n" + finishes +
+           "\n1\n0 0 sphere 0 0 0 1\n";
 }
 
 TEST(RoughFinishes, ConductorTakesItsRoughnessAndThePigmentAsReflectance)
@@ -652,12 +656,12 @@ TEST(ThinLensCamera, ApertureZeroIsThePinhole)
 
 TEST(ThinLensCamera, NeedsANonNegativeApertureAndAPositiveFocusDistance)
 {
-    EXPECT_TRUE(failsAt(withCamera("0 0 5\n0 0 0\n0 1 0\n45 lens -1 3"), 4, "-1",
-                        "lens aperture radius"));
-    EXPECT_TRUE(failsAt(withCamera("0 0 5\n0 0 0\n0 1 0\n45 lens 0.1 0"), 4, "0",
-                        "lens focus distance"));
-    EXPECT_TRUE(failsAt(withCamera("0 0 5\n0 0 0\n0 1 0\n45 lens 0.1"), 5, "0",
-                        "lens focus distance"));
+    EXPECT_TRUE(
+        failsAt(withCamera("0 0 5\n0 0 0\n0 1 0\n45 lens -1 3"), 4, "-1", "lens aperture radius"));
+    EXPECT_TRUE(
+        failsAt(withCamera("0 0 5\n0 0 0\n0 1 0\n45 lens 0.1 0"), 4, "0", "lens focus distance"));
+    EXPECT_TRUE(
+        failsAt(withCamera("0 0 5\n0 0 0\n0 1 0\n45 lens 0.1"), 5, "0", "lens focus distance"));
 }
 
 }  // namespace

@@ -55,8 +55,8 @@ TEST(SceneFeatures, UserSdfsAreCollectedFromNestedBlocks)
 
 TEST(SceneFeatures, TransformAnywhereInATreeCounts)
 {
-    const SceneFeatures features = analyseFeatures(parse(sceneWithObjects(
-        1, "0 0 union { sphere 0 0 0 1 scale 2 sphere 1 0 0 1 }\n")));
+    const SceneFeatures features = analyseFeatures(
+        parse(sceneWithObjects(1, "0 0 union { sphere 0 0 0 1 scale 2 sphere 1 0 0 1 }\n")));
     EXPECT_TRUE(features.transforms);
 }
 
@@ -65,14 +65,13 @@ TEST(SceneFeatures, MaterialsComeOnlyFromFinishesObjectsUse)
     const std::string text = "0 0 5\n0 0 0\n0 1 0\n45\n0\n1 solid 1 1 1\n"
                              "3\n0 0 0 0 0 0 0\n0 0 0 0 1 0 0\n0 0 0 0 0 1 1.5\n"
                              "1\n0 1 sphere 0 0 0 1\n";
-    EXPECT_EQ(analyseFeatures(parse(text)).materials,
-              std::set<MaterialKind>{MaterialKind::Mirror});
+    EXPECT_EQ(analyseFeatures(parse(text)).materials, std::set<MaterialKind>{MaterialKind::Mirror});
 }
 
 TEST(SceneFeatures, EnvironmentIsTheScenes)
 {
-    const SceneFeatures features = analyseFeatures(
-        parse("environment none\n" + sceneWithObjects(1, "0 0 sphere 0 0 0 1\n")));
+    const SceneFeatures features =
+        analyseFeatures(parse("environment none\n" + sceneWithObjects(1, "0 0 sphere 0 0 0 1\n")));
     EXPECT_EQ(features.environment, EnvironmentKind::None);
 }
 
@@ -127,7 +126,8 @@ TEST(SceneFeatures, RoughFinishesAreMicrofacetMaterials)
 
 TEST(SceneFeatures, AClassicSceneHasNoMicrofacetsAndAPinhole)
 {
-    const SceneFeatures features = analyseFeatures(parse(sceneWithObjects(1, "0 0 sphere 0 0 0 1\n")));
+    const SceneFeatures features =
+        analyseFeatures(parse(sceneWithObjects(1, "0 0 sphere 0 0 0 1\n")));
     EXPECT_FALSE(features.microfacets);
     EXPECT_FALSE(features.thinLens);
 }

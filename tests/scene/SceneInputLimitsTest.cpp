@@ -48,8 +48,7 @@ TEST(SceneMessages, AHugeWordWhereAnObjectTypeBelongsIsShownCutInEveryPartOfTheM
     EXPECT_LT(message.size(), 400u) << "the message holds " << message.size() << " characters";
     EXPECT_NE(message.find("read '" + std::string(40, 'x') + "...'"), std::string::npos)
         << message.substr(0, 400);
-    EXPECT_NE(message.find("shader file " + std::string(40, 'x') + "....glsl"),
-              std::string::npos)
+    EXPECT_NE(message.find("shader file " + std::string(40, 'x') + "....glsl"), std::string::npos)
         << message.substr(0, 400);
 }
 
@@ -65,8 +64,8 @@ TEST(SceneMessages, ControlAndNonAsciiBytesInATokenAreShownEscaped)
     const std::string message = messageOf("0 0 5\n0 \x1b[31m\xc3 0\n");
     EXPECT_NE(message.find("read '\\x1b[31m\\xc3'"), std::string::npos) << message;
     for (char c : message)
-        EXPECT_TRUE(c >= 0x20 && c < 0x7f) << "byte " << int(static_cast<unsigned char>(c))
-                                            << " in: " << message;
+        EXPECT_TRUE(c >= 0x20 && c < 0x7f)
+            << "byte " << int(static_cast<unsigned char>(c)) << " in: " << message;
 }
 
 // --- encodings --------------------------------------------------------------------------
@@ -80,7 +79,10 @@ TEST(SceneMessages, AUtf8ByteOrderMarkIsSkipped)
 
 TEST(SceneMessages, AUtf16FileIsNamedForItsEncoding)
 {
-    const std::string message = messageOf(std::string("\xFF\xFE" "0\0 \0" "0\0", 8));
+    const std::string message = messageOf(std::string("\xFF\xFE"
+                                                      "0\0 \0"
+                                                      "0\0",
+                                                      8));
     EXPECT_NE(message.find("UTF-16"), std::string::npos) << message;
     EXPECT_NE(message.find(kFileName + ":1:"), std::string::npos) << message;
 }
@@ -107,8 +109,7 @@ TEST(SceneMessages, TheLargestFloatIsStillANumber)
 
 TEST(SceneMessages, ACountBeyondAWholeNumberIsNamedTooLarge)
 {
-    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45\n99999999999\n", 5, "99999999999",
-                        "at most"));
+    EXPECT_TRUE(failsAt("0 0 5\n0 0 0\n0 1 0\n45\n99999999999\n", 5, "99999999999", "at most"));
 }
 
 // --- the camera -------------------------------------------------------------------------
@@ -152,8 +153,8 @@ TEST(SceneMessages, TargetEqualToTheEyeSaysSo)
 
 TEST(SceneLimits, AnObjectCountOfTwoBillionIsRefusedAtTheCount)
 {
-    EXPECT_TRUE(failsAt(sceneWithObjects(2000000000, "0 0 sphere 0 0 0 1\n"), 12,
-                        "2000000000", "at most"));
+    EXPECT_TRUE(
+        failsAt(sceneWithObjects(2000000000, "0 0 sphere 0 0 0 1\n"), 12, "2000000000", "at most"));
 }
 
 TEST(SceneLimits, APlaneCountOfTwoBillionIsRefusedAtTheCount)
@@ -167,7 +168,8 @@ TEST(SceneLimits, TransformsNestedAMillionDeepAreRefusedNotACrash)
     std::string nested;
     for (int i = 0; i < 1000000; ++i)
         nested += "translate 0 0 0 ";
-    const std::string message = messageOf(sceneWithObjects(1, "0 0 " + nested + "sphere 0 0 0 1\n"));
+    const std::string message =
+        messageOf(sceneWithObjects(1, "0 0 " + nested + "sphere 0 0 0 1\n"));
     EXPECT_NE(message.find("nest"), std::string::npos) << message.substr(0, 300);
 }
 

@@ -17,8 +17,8 @@ using namespace scene;
     if (glm::all(glm::epsilonEqual(actual, expected, tolerance)))
         return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure()
-           << "expected (" << expected.x << ", " << expected.y << ", " << expected.z
-           << "), got (" << actual.x << ", " << actual.y << ", " << actual.z << ")";
+           << "expected (" << expected.x << ", " << expected.y << ", " << expected.z << "), got ("
+           << actual.x << ", " << actual.y << ", " << actual.z << ")";
 }
 
 // --- the classic scenes -------------------------------------------------------------------
@@ -27,8 +27,8 @@ class ClassicScene : public ::testing::TestWithParam<int> {};
 
 TEST_P(ClassicScene, ParsesWithEveryIndexInRange)
 {
-    const auto path =
-        testing_support::sourceDirectory() / "scenes" / ("scene" + std::to_string(GetParam()) + ".in");
+    const auto path = testing_support::sourceDirectory() / "scenes" /
+                      ("scene" + std::to_string(GetParam()) + ".in");
     Scene scene;
     ASSERT_NO_THROW(scene = parseSceneFile(path)) << path;
     EXPECT_FALSE(scene.objects.empty());
@@ -45,8 +45,7 @@ INSTANTIATE_TEST_SUITE_P(Scene, ClassicScene, ::testing::Range(1, 8),
 
 TEST(ClassicSceneOne, HoldsTheValuesWrittenInIt)
 {
-    const Scene scene =
-        parseSceneFile(testing_support::sourceDirectory() / "scenes" / "scene1.in");
+    const Scene scene = parseSceneFile(testing_support::sourceDirectory() / "scenes" / "scene1.in");
     EXPECT_TRUE(near(scene.camera.eye, {1.0f, -8.4f, 4.44f}));
     EXPECT_TRUE(near(scene.camera.target, {1.0f, 10.0f, -2.0f}));
     EXPECT_TRUE(near(scene.camera.up, {0.0f, 0.0f, 1.0f}));
@@ -151,9 +150,9 @@ TEST(SceneFormat, PigmentsOfEveryKindKeepTheirValues)
 TEST(SceneFormat, TextureIsFoundInTheProjectTexturesWhenNotBesideTheScene)
 {
     const Scene scene = parse(kEveryObjectType);
-    EXPECT_EQ(std::filesystem::weakly_canonical(scene.pigments[2].texturePath),
-              std::filesystem::weakly_canonical(FileLookup::dataDirectory() / "textures" /
-                                                "brick.ppm"));
+    EXPECT_EQ(
+        std::filesystem::weakly_canonical(scene.pigments[2].texturePath),
+        std::filesystem::weakly_canonical(FileLookup::dataDirectory() / "textures" / "brick.ppm"));
 }
 
 TEST(SceneFormat, FinishesAreEmissionExponentReflectionTransmissionAndIndex)
@@ -295,10 +294,9 @@ TEST(SceneFormat, DefaultEnvironmentIsTheSky)
 
 TEST(SceneFormat, OnlyEmissiveSpheresAreSphereLights)
 {
-    const Scene scene = parse(sceneWithObjects(3,
-                                               "0 1 sphere 0 1 0 0.5\n"
-                                               "0 0 sphere 0 3 0 0.5\n"
-                                               "1 1 sphere 2 1 0 0.25\n"));
+    const Scene scene = parse(sceneWithObjects(3, "0 1 sphere 0 1 0 0.5\n"
+                                                  "0 0 sphere 0 3 0 0.5\n"
+                                                  "1 1 sphere 2 1 0 0.25\n"));
     const auto lights = sphereLights(scene);
     ASSERT_EQ(lights.size(), 2u);
     EXPECT_EQ(lights[0].object, 0);

@@ -26,8 +26,7 @@ inline scene::Scene parse(const std::string& text)
 // of the file), whose expectation contains `expectedPart`, and whose message names all
 // three as "file:line: read 'token', expected ...".
 inline ::testing::AssertionResult failsAt(const std::string& text, int line,
-                                          const std::string& token,
-                                          const std::string& expectedPart)
+                                          const std::string& token, const std::string& expectedPart)
 {
     try {
         parse(text);
@@ -56,17 +55,17 @@ inline ::testing::AssertionResult failsAt(const std::string& text, int line,
 // (the second emits). The object count is on line 12; `objects` starts on line 13.
 inline std::string sceneWithObjects(int count, const std::string& objects)
 {
-    return "0 0 5\n"                     // 1 eye
-           "0 0 0\n"                     // 2 target
-           "0 1 0\n"                     // 3 up
-           "45\n"                        // 4 fovy
-           "0\n"                         // 5 point lights
-           "2\n"                         // 6 pigments
-           "solid 1 0 0\n"               // 7
-           "solid 0 1 0\n"               // 8
-           "2\n"                         // 9 finishes
-           "0 0 0  0 0 0 0\n"            // 10
-           "5 5 5  0 0 0 0\n"            // 11 emits
+    return "0 0 5\n"                       // 1 eye
+           "0 0 0\n"                       // 2 target
+           "0 1 0\n"                       // 3 up
+           "45\n"                          // 4 fovy
+           "0\n"                           // 5 point lights
+           "2\n"                           // 6 pigments
+           "solid 1 0 0\n"                 // 7
+           "solid 0 1 0\n"                 // 8
+           "2\n"                           // 9 finishes
+           "0 0 0  0 0 0 0\n"              // 10
+           "5 5 5  0 0 0 0\n"              // 11 emits
            + std::to_string(count) + "\n"  // 12 objects
            + objects;                      // 13...
 }

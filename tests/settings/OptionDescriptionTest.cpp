@@ -41,23 +41,25 @@ struct Owner {
 
 TEST(BoundOption, ReadsAndWritesEachTypeAsOneWord)
 {
-    const auto number = bindOption<Owner>("number", [](auto& o) -> auto& { return o.number; },
-                                          option("--number", "F", "").check(positive()));
+    const auto number = bindOption<Owner>(
+        "number", [](auto& o) -> auto& { return o.number; },
+        option("--number", "F", "").check(positive()));
     Owner owner;
     number.apply(owner, "1.2");
     EXPECT_EQ(owner.number, 1.2f);
     EXPECT_EQ(number.format(owner), "1.2") << "the shortest text that reads back the same float";
     EXPECT_THROW(number.apply(owner, "0"), UsageError);
 
-    const auto sampler = bindOption<Owner>("sampler", [](auto& o) -> auto& { return o.sampler; },
-                                           option("--sampler", "KIND", ""));
+    const auto sampler = bindOption<Owner>(
+        "sampler", [](auto& o) -> auto& { return o.sampler; }, option("--sampler", "KIND", ""));
     EXPECT_EQ(sampler.choiceNames, (std::vector<std::string>{"independent", "sobol"}));
     EXPECT_TRUE(sampler.read(owner, "independent"));
     EXPECT_EQ(owner.sampler, SamplerKind::Independent);
     EXPECT_FALSE(sampler.read(owner, "halton"));
 
-    const auto count = bindOption<Owner>("count", [](auto& o) -> auto& { return o.count; },
-                                         option("--count", "N", "").check(wholeFrom(1, 9)));
+    const auto count = bindOption<Owner>(
+        "count", [](auto& o) -> auto& { return o.count; },
+        option("--count", "N", "").check(wholeFrom(1, 9)));
     count.apply(owner, "3");
     EXPECT_EQ(owner.count, 3);
     EXPECT_FALSE(count.format) << "an optional has no word of its own";
@@ -65,20 +67,23 @@ TEST(BoundOption, ReadsAndWritesEachTypeAsOneWord)
 
 TEST(BoundOption, ARowAskingWhatItsTypeCannotGiveIsRefused)
 {
-    EXPECT_THROW(bindOption<Owner>("flag", [](auto& o) -> auto& { return o.flag; },
-                                   switchOption("--no-flag", "")),
-                 std::logic_error)
+    EXPECT_THROW(
+        bindOption<Owner>(
+            "flag", [](auto& o) -> auto& { return o.flag; }, switchOption("--no-flag", "")),
+        std::logic_error)
         << "a switch without a value to set";
-    EXPECT_THROW(bindOption<Owner>("flag", [](auto& o) -> auto& { return o.flag; },
-                                   switchOption("--no-flag", "").sets(0)),
-                 std::logic_error)
+    EXPECT_THROW(
+        bindOption<Owner>(
+            "flag", [](auto& o) -> auto& { return o.flag; }, switchOption("--no-flag", "").sets(0)),
+        std::logic_error)
         << "a switch setting a value of another type";
-    EXPECT_THROW(bindOption<Owner>("flag", [](auto& o) -> auto& { return o.flag; },
-                                   option("--flag", "B", "")),
+    EXPECT_THROW(bindOption<Owner>(
+                     "flag", [](auto& o) -> auto& { return o.flag; }, option("--flag", "B", "")),
                  std::logic_error)
         << "a value read into a bool";
-    EXPECT_THROW(bindOption<Owner>("count", [](auto& o) -> auto& { return o.count; },
-                                   option("--count", "N", "").metadata("count", "count")),
+    EXPECT_THROW(bindOption<Owner>(
+                     "count", [](auto& o) -> auto& { return o.count; },
+                     option("--count", "N", "").metadata("count", "count")),
                  std::logic_error)
         << "an optional recorded in a file";
 }

@@ -29,11 +29,10 @@ std::string functionText(const std::string& glsl, const std::string& head)
     return glsl.substr(start, end == std::string::npos ? std::string::npos : end - start + 3);
 }
 
-std::string guardedCase(const char* featureSwitch, const std::string& test,
-                        const std::string& call)
+std::string guardedCase(const char* featureSwitch, const std::string& test, const std::string& call)
 {
-    return std::string("#if ") + featureSwitch + "\n    if (" + test + ")\n        return " +
-           call + ";\n#endif\n";
+    return std::string("#if ") + featureSwitch + "\n    if (" + test + ")\n        return " + call +
+           ";\n#endif\n";
 }
 
 TEST(MaterialDispatchers, EveryMaterialButTheFallbackIsSampledByItsCodeUnderItsSwitch)
@@ -42,25 +41,25 @@ TEST(MaterialDispatchers, EveryMaterialButTheFallbackIsSampledByItsCodeUnderItsS
     ASSERT_FALSE(sample.empty());
     const auto& materials = materialDescriptions();
     for (std::size_t i = 1; i < materials.size(); ++i)
-        EXPECT_NE(sample.find(guardedCase(materials[i].featureSwitch,
-                                          "s.material == " + codeName(materials[i]),
-                                          std::string(materials[i].glslPrefix) +
-                                              "Sample(s, wo, uLobe, uDirection)")),
+        EXPECT_NE(sample.find(guardedCase(
+                      materials[i].featureSwitch, "s.material == " + codeName(materials[i]),
+                      std::string(materials[i].glslPrefix) + "Sample(s, wo, uLobe, uDirection)")),
                   std::string::npos)
-            << materials[i].name << " in\n" << sample;
+            << materials[i].name << " in\n"
+            << sample;
     EXPECT_NE(sample.find(std::string("    return ") + materials.front().glslPrefix +
                           "Sample(s, wo, uLobe, uDirection);\n}"),
               std::string::npos)
-        << "the fallback is not the last, unconditional answer:\n" << sample;
+        << "the fallback is not the last, unconditional answer:\n"
+        << sample;
 }
 
 TEST(MaterialDispatchers, EvaluationAndDensityLeaveOutTheDeltasAndAnswerZeroForThem)
 {
     const std::string glsl = materialDispatchers();
-    for (const auto& [head, suffix, zero] :
-         {std::tuple<std::string, std::string, std::string>{"vec3 bsdfEvaluate(", "Evaluate",
-                                                             "vec3(0.0)"},
-          {"float bsdfPdf(", "Pdf", "0.0"}}) {
+    for (const auto& [head, suffix, zero] : {std::tuple<std::string, std::string, std::string>{
+                                                 "vec3 bsdfEvaluate(", "Evaluate", "vec3(0.0)"},
+                                             {"float bsdfPdf(", "Pdf", "0.0"}}) {
         const std::string function = functionText(glsl, head);
         ASSERT_FALSE(function.empty()) << head;
         for (const MaterialDescription& material : materialDescriptions()) {
@@ -85,7 +84,8 @@ TEST(MaterialDispatchers, IsDeltaMaterialNamesExactlyTheDeltas)
         const bool delta = material.scattering == Scattering::Delta;
         deltas += delta ? 1 : 0;
         EXPECT_EQ(isDelta.find("material == " + codeName(material)) != std::string::npos, delta)
-            << material.name << " in\n" << isDelta;
+            << material.name << " in\n"
+            << isDelta;
     }
     EXPECT_GT(deltas, 0) << "mirror and glass are deltas";
 }
@@ -98,13 +98,15 @@ TEST(PigmentDispatcher, EveryKindButTheFallbackIsColouredByItsCodeUnderItsSwitch
     const std::string arguments = "(pigment, p, n, footprint, offSurface, uPattern)";
     EXPECT_NE(color.find("    vec3 color = " + (pigments.front().glslFunction + arguments) + ";"),
               std::string::npos)
-        << "the fallback is not the colour every other kind replaces:\n" << color;
+        << "the fallback is not the colour every other kind replaces:\n"
+        << color;
     for (std::size_t i = 1; i < pigments.size(); ++i)
-        EXPECT_NE(color.find(std::string("#if ") + pigments[i].featureSwitch + "\n    if (kind == " +
-                             codeName(pigments[i]) + ")\n        color = " +
+        EXPECT_NE(color.find(std::string("#if ") + pigments[i].featureSwitch +
+                             "\n    if (kind == " + codeName(pigments[i]) + ")\n        color = " +
                              pigments[i].glslFunction + arguments + ";\n#endif\n"),
                   std::string::npos)
-            << pigments[i].keyword << " in\n" << color;
+            << pigments[i].keyword << " in\n"
+            << color;
     EXPECT_NE(color.find("    return color;\n}"), std::string::npos) << color;
 }
 
@@ -117,17 +119,17 @@ TEST(LightDispatchers, EveryKindIsSampledByItsCodeUnderItsSwitch)
     ASSERT_FALSE(sample.empty()) << glsl;
     for (const LightDescription& light : lightDescriptions())
         EXPECT_NE(sample.find(std::string("#if ") + light.featureSwitch +
-                              "\n    if (LIGHT_KINDS_COMPILED == 1 || kind == " +
-                              codeName(light) + ")\n        return " + light.glslPrefix +
+                              "\n    if (LIGHT_KINDS_COMPILED == 1 || kind == " + codeName(light) +
+                              ")\n        return " + light.glslPrefix +
                               "Sample(light, p, u, selection, chosen);\n#endif\n"),
                   std::string::npos)
-            << light.name << " in\n" << sample;
+            << light.name << " in\n"
+            << sample;
     EXPECT_NE(sample.find("    return false;\n}"), std::string::npos) << sample;
     std::string sum;
     for (const LightDescription& light : lightDescriptions())
         sum += (sum.empty() ? "" : " + ") + std::string(light.featureSwitch);
-    EXPECT_NE(glsl.find("#define LIGHT_KINDS_COMPILED (" + sum + ")\n"), std::string::npos)
-        << glsl;
+    EXPECT_NE(glsl.find("#define LIGHT_KINDS_COMPILED (" + sum + ")\n"), std::string::npos) << glsl;
 }
 
 // A BSDF-sampled ray never meets a point: lightPdf leaves the deltas out, and includes the
@@ -141,9 +143,10 @@ TEST(LightDispatchers, TheDensityLeavesOutTheDeltasAndIncludesTheSelection)
         EXPECT_EQ(pdf.find(light.glslPrefix + std::string("Pdf(light, p, direction)")) !=
                       std::string::npos,
                   !delta)
-            << light.name << " in\n" << pdf;
-        EXPECT_EQ(pdf.find(codeName(light)) != std::string::npos, !delta)
-            << light.name << " in\n" << pdf;
+            << light.name << " in\n"
+            << pdf;
+        EXPECT_EQ(pdf.find(codeName(light)) != std::string::npos, !delta) << light.name << " in\n"
+                                                                          << pdf;
     }
     EXPECT_NE(pdf.find("    return lightSelectionProbability(light) * pdf;\n}"), std::string::npos)
         << pdf;

@@ -176,7 +176,9 @@ int mismatches(const ObjectHierarchy& h, const std::vector<Ball>& balls, std::mt
             const Hit a = linearPoint(balls, p, marchedOnly);
             const Hit b = hierarchyPoint(h, balls, p, marchedOnly);
             if (a.t != b.t) {
-                if (getenv("DEBUG_H")) printf("point %g %g %g %d: %d %g vs %d %g\n", p.x,p.y,p.z,marchedOnly,a.object,a.t,b.object,b.t);
+                if (getenv("DEBUG_H"))
+                    printf("point %g %g %g %d: %d %g vs %d %g\n", p.x, p.y, p.z, marchedOnly,
+                           a.object, a.t, b.object, b.t);
                 ++wrong;
             }
         }
@@ -186,8 +188,8 @@ int mismatches(const ObjectHierarchy& h, const std::vector<Ball>& balls, std::mt
         if (!object.bounds)
             continue;
         const Box& box = *object.bounds;
-        const glm::vec3 inside = glm::mix(box.lower, box.upper,
-                                          glm::vec3(unit(rng), unit(rng), unit(rng)));
+        const glm::vec3 inside =
+            glm::mix(box.lower, box.upper, glm::vec3(unit(rng), unit(rng), unit(rng)));
         judgeRay(inside, randomDirection(rng));
         judgePoint(inside);
         // Along a face: the origin on the face (axis `a` at a bound), the direction along
@@ -264,7 +266,8 @@ TEST(ObjectHierarchy, EveryBoundedObjectIsInOneLeafAndEveryBoxHoldsWhatIsBelowIt
         const int end = node.skip < 0 ? static_cast<int>(h.nodes.size()) : node.skip;
         for (int j = i; j < end; ++j) {
             EXPECT_TRUE(glm::all(glm::lessThanEqual(node.bounds.lower, h.nodes[j].bounds.lower)));
-            EXPECT_TRUE(glm::all(glm::greaterThanEqual(node.bounds.upper, h.nodes[j].bounds.upper)));
+            EXPECT_TRUE(
+                glm::all(glm::greaterThanEqual(node.bounds.upper, h.nodes[j].bounds.upper)));
             for (int k = h.nodes[j].first; k < h.nodes[j].first + h.nodes[j].count; ++k) {
                 const Box& box = *objects[h.leafObjects[k]].bounds;
                 EXPECT_TRUE(glm::all(glm::lessThanEqual(node.bounds.lower, box.lower)));

@@ -75,15 +75,19 @@ TEST(SceneRecords, EachValueIsPackedWhereItsAccessorReadsIt)
 TEST(SceneRecords, TheGeneratedAccessorsReadTheLayoutsSlots)
 {
     const std::string block = uniformBlock({}, {});
-    EXPECT_NE(block.find("vec3 finishEmission(int finish) { return FINISH_RECORD(finish, 0).rgb; }"),
-              std::string::npos)
+    EXPECT_NE(
+        block.find("vec3 finishEmission(int finish) { return FINISH_RECORD(finish, 0).rgb; }"),
+        std::string::npos)
         << block;
-    EXPECT_NE(block.find("int finishMaterial(int finish) { return int(FINISH_RECORD(finish, 1).x); }"),
-              std::string::npos);
-    EXPECT_NE(block.find("uint lightCullingBit(int light) { return uint(LIGHT_RECORD(light, 2).z); }"),
-              std::string::npos);
-    EXPECT_NE(block.find("int objectSphereLight(int object) { return OBJECT_RECORD(object, 0).z; }"),
-              std::string::npos);
+    EXPECT_NE(
+        block.find("int finishMaterial(int finish) { return int(FINISH_RECORD(finish, 1).x); }"),
+        std::string::npos);
+    EXPECT_NE(
+        block.find("uint lightCullingBit(int light) { return uint(LIGHT_RECORD(light, 2).z); }"),
+        std::string::npos);
+    EXPECT_NE(
+        block.find("int objectSphereLight(int object) { return OBJECT_RECORD(object, 0).z; }"),
+        std::string::npos);
     EXPECT_NE(block.find("uniform vec4 uLights[3 * LIGHT_ARRAY_SIZE];"), std::string::npos);
 }
 

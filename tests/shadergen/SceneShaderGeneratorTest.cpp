@@ -18,9 +18,9 @@
 namespace scene_tests {
 namespace {
 
+using settings::ShaderVariant;
 using shadergen::generateSceneShaderCode;
 using shadergen::SceneShaderCode;
-using settings::ShaderVariant;
 
 // Specialised whatever the scene's weight: these tests judge the specialised plan.
 SceneShaderCode specialized(const std::string& objects, int count)
@@ -83,8 +83,7 @@ std::string functionBody(const std::string& code, const std::string& signature)
 
 TEST(RayCulling, PolyhedraAreMetByExactIntersectionInsteadOfMarched)
 {
-    const SceneShaderCode code =
-        specialized("0 0 polyhedron 3  0 1 0 2  1 0 0 4  0 0 -2 6\n", 1);
+    const SceneShaderCode code = specialized("0 0 polyhedron 3  0 1 0 2  1 0 0 4  0 0 -2 6\n", 1);
     // The planes as the exact clip uses them: unit normals, in world space.
     const std::vector<glm::vec4> planes = exactClipPlanes(code);
     ASSERT_EQ(planes.size(), 3u);
@@ -142,7 +141,8 @@ TEST(RayCulling, SpheresAreMetByExactIntersectionInsteadOfMarched)
 
 TEST(RayCulling, ASceneWithAShapeWithoutAClosedFormMarches)
 {
-    const SceneShaderCode code = specialized("0 0 sphere 1 2 3 0.5\n0 0 rounded_box 0 1 0  1 1 1  0.2\n", 2);
+    const SceneShaderCode code =
+        specialized("0 0 sphere 1 2 3 0.5\n0 0 rounded_box 0 1 0  1 1 1  0.2\n", 2);
     EXPECT_TRUE(code.marchesAnything);
     EXPECT_NE(code.defines.find("#define HAS_MARCHED_OBJECTS 1"), std::string::npos);
 }
@@ -176,16 +176,15 @@ TEST(RayCulling, BoxesCylindersDisksConesAndToriAreMetByExactIntersectionInstead
                                              "0 0 torus 0 1 0  2 0.5\n",
                                              6);
     ASSERT_EQ(code.plan.objects.size(), 6u);
-    const char* calls[] = {"exactBox(",  "exactCappedCylinder(", "exactDisk(",
-                           "exactCone(", "exactBox(",            "exactTorus("};
+    const char* calls[] = {"exactBox(", "exactCappedCylinder(", "exactDisk(", "exactCone(",
+                           "exactBox(", "exactTorus("};
     for (std::size_t i = 0; i < code.plan.objects.size(); ++i) {
         EXPECT_TRUE(code.plan.objects[i].exact) << "object " << i;
         EXPECT_NE(code.plan.objects[i].exactIntersection.find(calls[i]), std::string::npos)
             << "object " << i;
         EXPECT_FALSE(code.plan.objects[i].culling) << "object " << i << ": never marched";
     }
-    EXPECT_NE(code.plan.objects[4].exactIntersection.find("toLocalPoint(origin"),
-              std::string::npos)
+    EXPECT_NE(code.plan.objects[4].exactIntersection.find("toLocalPoint(origin"), std::string::npos)
         << "a transformed box is met in its own frame";
     EXPECT_FALSE(code.marchesAnything) << "nothing is left to march";
     EXPECT_NE(code.defines.find("#define HAS_MARCHED_OBJECTS 0"), std::string::npos);
@@ -229,13 +228,16 @@ SceneShaderCode exactReference(const std::string& objects, int count)
 
 TEST(ExactReference, ASharpCsgBlockOfShapesWithAClosedFormIsWalkedOverItsLeavesCrossings)
 {
-    const SceneShaderCode code = exactReference("0 0 translate 0 1 0 difference {\n"
-                                                "  intersection { box 0 0 0 1 1 1  sphere 0 0 0 1.3 }\n"
-                                                "  rotate 1 0 0 90 cylinder 0 0 0 0.5 2\n"
-                                                "}\n",
-                                                1);
+    const SceneShaderCode code =
+        exactReference("0 0 translate 0 1 0 difference {\n"
+                       "  intersection { box 0 0 0 1 1 1  sphere 0 0 0 1.3 }\n"
+                       "  rotate 1 0 0 90 cylinder 0 0 0 0.5 2\n"
+                       "}\n",
+                       1);
     EXPECT_EQ(occurrences(code.exactFunctions, R"(bool exactCsgCrossing0\()"), 1);
-    EXPECT_EQ(occurrences(code.exactFunctions, R"(exactCsgCrossing0\(origin, direction, tMin, 0, hit\))"), 1)
+    EXPECT_EQ(
+        occurrences(code.exactFunctions, R"(exactCsgCrossing0\(origin, direction, tMin, 0, hit\))"),
+        1)
         << "exactSceneIntersect meets the object by its walk";
     EXPECT_EQ(occurrences(code.exactFunctions, R"(exact(Box|Sphere|CappedCylinder)\()"), 3)
         << "each of the three leaves is met by its own closed form";
@@ -340,9 +342,8 @@ TEST(ScenePlan, EachObjectsFunctionNamesItsObjectAndSceneFileLine)
 
 TEST(RayCulling, GeneralShaderCullsNothing)
 {
-    const SceneShaderCode code =
-        generateSceneShaderCode(parse(sceneWithObjects(1, "0 0 sphere 0 0 0 1\n")),
-                                {ShaderVariant::General});
+    const SceneShaderCode code = generateSceneShaderCode(
+        parse(sceneWithObjects(1, "0 0 sphere 0 0 0 1\n")), {ShaderVariant::General});
     EXPECT_EQ(occurrences(code.sceneFunctions, R"(cull(ByBall|ByHalfSpace)\()"), 0);
 }
 
@@ -458,10 +459,10 @@ TEST(ShaderVariantForScene, TheProjectsScenesStaySpecialisedAndLargeScenesDoNot)
             std::printf("%-40s not read here: %s\n", entry.path().filename().c_str(), error.what());
             continue;
         }
-        std::printf("%-40s %3zu objects, shape code weight %3zu\n",
-                    entry.path().filename().c_str(), scene.objects.size(),
-                    shadergen::shapeCodeWeight(scene));
-        EXPECT_EQ(shadergen::variantForScene(scene, ShaderVariant::Specialized), ShaderVariant::Specialized)
+        std::printf("%-40s %3zu objects, shape code weight %3zu\n", entry.path().filename().c_str(),
+                    scene.objects.size(), shadergen::shapeCodeWeight(scene));
+        EXPECT_EQ(shadergen::variantForScene(scene, ShaderVariant::Specialized),
+                  ShaderVariant::Specialized)
             << entry.path();
     }
     std::string spheres;
@@ -470,7 +471,8 @@ TEST(ShaderVariantForScene, TheProjectsScenesStaySpecialisedAndLargeScenesDoNot)
     const scene::Scene large =
         parse(sceneWithObjects(static_cast<int>(shadergen::kMostShapeCodeWeight) + 1, spheres));
     EXPECT_EQ(shadergen::shapeCodeWeight(large), shadergen::kMostShapeCodeWeight + 1);
-    EXPECT_EQ(shadergen::variantForScene(large, ShaderVariant::Specialized), ShaderVariant::FeaturesOnly);
+    EXPECT_EQ(shadergen::variantForScene(large, ShaderVariant::Specialized),
+              ShaderVariant::FeaturesOnly);
     EXPECT_EQ(shadergen::variantForScene(large, ShaderVariant::ShapesOnly), ShaderVariant::General);
     EXPECT_EQ(shadergen::variantForScene(large, ShaderVariant::General), ShaderVariant::General);
     const SceneShaderCode code = generateSceneShaderCode(large);

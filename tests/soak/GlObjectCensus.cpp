@@ -40,8 +40,7 @@ long residentKilobytes()
 }
 
 struct Census {
-    int textures = 0, framebuffers = 0, programs = 0, shaders = 0, vertexArrays = 0,
-        buffers = 0;
+    int textures = 0, framebuffers = 0, programs = 0, shaders = 0, vertexArrays = 0, buffers = 0;
 };
 
 // Names are small integers handed out from 1; 65536 is far past what a run creates.
@@ -101,8 +100,8 @@ int main(int argc, char* argv[])
                         "textures, %d framebuffers, %d programs, %d shaders, %d vertex arrays, "
                         "%d buffers\n",
                         since(start), frame, reloads, residentKilobytes(), census.textures,
-                        census.framebuffers, census.programs, census.shaders,
-                        census.vertexArrays, census.buffers);
+                        census.framebuffers, census.programs, census.shaders, census.vertexArrays,
+                        census.buffers);
             std::fflush(stdout);
         };
         auto lastReport = start;

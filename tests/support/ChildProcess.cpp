@@ -18,8 +18,8 @@ namespace testing_support {
 
 namespace {
 
-std::vector<std::string> childEnvironment(
-    const std::map<std::string, std::optional<std::string>>& changes)
+std::vector<std::string>
+childEnvironment(const std::map<std::string, std::optional<std::string>>& changes)
 {
     std::vector<std::string> result;
     for (char** entry = environ; *entry != nullptr; ++entry) {
@@ -168,8 +168,7 @@ ProcessResult runProcess(const std::vector<std::string>& arguments, const Proces
             if (count > 0) {
                 sinks[i]->append(buffer, static_cast<std::size_t>(count));
                 if (options.signalWhenErrorShows && !signalled && i == 1 &&
-                    result.standardError.find(*options.signalWhenErrorShows) !=
-                        std::string::npos) {
+                    result.standardError.find(*options.signalWhenErrorShows) != std::string::npos) {
                     kill(pid, options.signal);
                     signalled = true;
                 }

@@ -33,8 +33,8 @@ struct ProcessOptions {
 };
 
 struct ProcessResult {
-    bool exited = false;      // ended by exit(); else by a signal
-    int exitStatus = -1;      // when exited
+    bool exited = false;        // ended by exit(); else by a signal
+    int exitStatus = -1;        // when exited
     int terminatingSignal = 0;  // when not exited
     bool timedOut = false;
     std::string standardOutput;

@@ -91,8 +91,7 @@ io::Image skyWithSunEnvironmentMap(int width, int height, const SkyWithSun& sky)
 {
     const glm::dvec3 sun = sunDirection(sky);
     const double cosSunRadius = std::cos(sky.sunRadiusDegrees * kPi / 180.0);
-    const glm::vec3 sunColour =
-        static_cast<float>(sky.sunRadiance) * glm::vec3(1.0f, 0.96f, 0.88f);
+    const glm::vec3 sunColour = static_cast<float>(sky.sunRadiance) * glm::vec3(1.0f, 0.96f, 0.88f);
     constexpr int kPoints = 4;
     io::Image image = io::Image(width, height, 3);
     for (int y = 0; y < height; ++y)
@@ -113,8 +112,8 @@ TemporaryImageFile::TemporaryImageFile(const io::Image& image, const std::string
 {
     static std::atomic<int> counter{0};
     path_ = std::filesystem::temp_directory_path() /
-            ("raytracer-test-map-" + std::to_string(::getpid()) + "-" +
-             std::to_string(counter++) + extension);
+            ("raytracer-test-map-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) +
+             extension);
     io::writeImage(path_, image);
 }
 

@@ -36,8 +36,7 @@ double cappedZSquaredThreshold(int blocks, double cap, double falsePositiveRate)
     // Setting the right side to the false-positive rate and solving for t:
     const double logInverse = std::log(1.0 / falsePositiveRate);
     const double linear = logInverse * cap / 3.0;
-    const double t =
-        linear + std::sqrt(linear * linear + 2.0 * logInverse * blocks * (cap - 1.0));
+    const double t = linear + std::sqrt(linear * linear + 2.0 * logInverse * blocks * (cap - 1.0));
     return blocks + t;
 }
 
@@ -76,11 +75,10 @@ Comparison compareImages(const RenderedImage& test, const RenderedImage& referen
                          const ComparisonSettings& settings)
 {
     if (test.width() != reference.width() || test.height() != reference.height())
-        throw std::invalid_argument(
-            "cannot compare a " + std::to_string(test.width()) + "x" +
-            std::to_string(test.height()) + " render with a " +
-            std::to_string(reference.width()) + "x" + std::to_string(reference.height()) +
-            " reference");
+        throw std::invalid_argument("cannot compare a " + std::to_string(test.width()) + "x" +
+                                    std::to_string(test.height()) + " render with a " +
+                                    std::to_string(reference.width()) + "x" +
+                                    std::to_string(reference.height()) + " reference");
 
     const int width = test.width();
     const int height = test.height();
@@ -114,8 +112,8 @@ Comparison compareImages(const RenderedImage& test, const RenderedImage& referen
                 test.varianceOfMean(x, y) * testCount * std::max(testCount - 1.0, 0.0);
             const double referenceSquares = reference.varianceOfMean(x, y) * referenceCount *
                                             std::max(referenceCount - 1.0, 0.0);
-            const double pooled = (testSquares + referenceSquares) /
-                                  std::max(testCount + referenceCount - 2.0, 1.0);
+            const double pooled =
+                (testSquares + referenceSquares) / std::max(testCount + referenceCount - 2.0, 1.0);
             const double varianceOfDifference = pooled * (1.0 / testCount + 1.0 / referenceCount);
 
             const int b = (y / block) * comparison.blocksX + x / block;

@@ -17,8 +17,8 @@ public:
     PinholeCamera(const scene::Camera& camera, int width, int height)
         : eye_(camera.eye),
           frame_(scene::cameraFrame(camera)),
-          tanHalfFovy_(std::tan(glm::radians(static_cast<double>(camera.verticalFieldOfViewDegrees)) /
-                               2.0)),
+          tanHalfFovy_(
+              std::tan(glm::radians(static_cast<double>(camera.verticalFieldOfViewDegrees)) / 2.0)),
           width_(width),
           height_(height)
     {
@@ -53,9 +53,8 @@ public:
     template <typename Test>
     bool wholePixel(int x, int y, Test test) const
     {
-        return test(direction(x, y)) && test(direction(x + 1, y)) &&
-               test(direction(x, y + 1)) && test(direction(x + 1, y + 1)) &&
-               test(direction(x + 0.5, y + 0.5));
+        return test(direction(x, y)) && test(direction(x + 1, y)) && test(direction(x, y + 1)) &&
+               test(direction(x + 1, y + 1)) && test(direction(x + 0.5, y + 0.5));
     }
 
 private:

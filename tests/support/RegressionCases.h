@@ -13,7 +13,7 @@ namespace testing_support {
 
 struct RegressionCase {
     std::string name;
-    std::string scene;  // relative to the project's source folder
+    std::string scene;    // relative to the project's source folder
     std::string feature;  // what the case guards, for messages
     int width = 64;
     int height = 48;

@@ -35,8 +35,8 @@ RenderedImage renderScene(const scene::Scene& scene, int width, int height, int 
     // estimate (the running mean is updated after each path).
     constexpr int kSamplesPerDraw = 8;
     while (renderer.samplesPerPixel() < samplesPerPixel)
-        renderer.renderFrame({}, std::min(kSamplesPerDraw,
-                                          samplesPerPixel - renderer.samplesPerPixel()));
+        renderer.renderFrame(
+            {}, std::min(kSamplesPerDraw, samplesPerPixel - renderer.samplesPerPixel()));
     renderer.completeSamples();
     RenderedImage image;
     image.radiance = renderer.radiance();

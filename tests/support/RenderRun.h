@@ -1,10 +1,10 @@
 #pragma once
 // Rendering a scene in-process, in the GL context the test executable made (GlTestMain.cpp),
 // and reading back what the regression and physics tests compare.
-#include "io/Image.h"
 #include "film/Accumulation.h"
-#include "settings/RenderSettings.h"
+#include "io/Image.h"
 #include "scene/Scene.h"
+#include "settings/RenderSettings.h"
 
 #include <cstdint>
 #include <filesystem>

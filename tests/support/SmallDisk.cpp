@@ -9,8 +9,7 @@
 
 namespace testing_support {
 
-SmallDisk::SmallDisk(const std::filesystem::path& folder, const std::string& size)
-    : folder_(folder)
+SmallDisk::SmallDisk(const std::filesystem::path& folder, const std::string& size) : folder_(folder)
 {
     std::filesystem::create_directories(folder_);
     const std::string options = "size=" + size;
@@ -18,7 +17,8 @@ SmallDisk::SmallDisk(const std::filesystem::path& folder, const std::string& siz
         mounted_ = true;
     else
         whyNotMounted_ = std::string("mounting a ") + size + " tmpfs is not allowed here (" +
-                         std::strerror(errno) + "): the full-disk tests need root or "
+                         std::strerror(errno) +
+                         "): the full-disk tests need root or "
                          "CAP_SYS_ADMIN";
 }
 

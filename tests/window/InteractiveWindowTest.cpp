@@ -8,9 +8,9 @@
 #include "scene/SceneBounds.h"
 #include "scene/SceneParser.h"
 
-#include <glm/glm.hpp>
 #include "support/ChildProcess.h"
 #include "window/WindowDriver.h"
+#include <glm/glm.hpp>
 
 #include <gtest/gtest.h>
 
@@ -35,21 +35,26 @@ namespace fs = std::filesystem;
 std::string sceneText(const std::string& colour, const std::string& extraObjects = "",
                       int extraCount = 0, const std::string& sphereWord = "sphere")
 {
-    return "0 1.2 4\n"                               // 1 eye
-           "0 0.5 0\n"                               // 2 target
-           "0 1 0\n"                                 // 3 up
-           "45\n"                                    // 4 fovy
-           "1\n"                                     // 5 point lights
-           "2 5 3  40 40 40\n"                       // 6
-           "2\n"                                     // 7 pigments
-           "solid " + colour + "\n"                  // 8
-           "solid 0.5 0.5 0.5\n"                     // 9
-           "1\n"                                     // 10 finishes
-           "0 0 0  0 0 0 0\n"                        // 11
-           + std::to_string(2 + extraCount) + "\n"   // 12 objects
-           "0 0 " + sphereWord + " 0 0.5 0  0.5\n"   // 13
-           "1 0 polyhedron 1\n"                      // 14
-           "    0 1 0 0\n"                           // 15
+    return "0 1.2 4\n"          // 1 eye
+           "0 0.5 0\n"          // 2 target
+           "0 1 0\n"            // 3 up
+           "45\n"               // 4 fovy
+           "1\n"                // 5 point lights
+           "2 5 3  40 40 40\n"  // 6
+           "2\n"                // 7 pigments
+           "solid " +
+           colour +
+           "\n"                   // 8
+           "solid 0.5 0.5 0.5\n"  // 9
+           "1\n"                  // 10 finishes
+           "0 0 0  0 0 0 0\n"     // 11
+           + std::to_string(2 + extraCount) +
+           "\n"  // 12 objects
+           "0 0 " +
+           sphereWord +
+           " 0 0.5 0  0.5\n"     // 13
+           "1 0 polyhedron 1\n"  // 14
+           "    0 1 0 0\n"       // 15
            + extraObjects;
 }
 
@@ -198,15 +203,9 @@ protected:
         return program_.get();
     }
 
-    static fs::path scene1Path()
-    {
-        return fs::path(RAYTRACER_SOURCE_DIR) / "scenes" / "scene1.in";
-    }
+    static fs::path scene1Path() { return fs::path(RAYTRACER_SOURCE_DIR) / "scenes" / "scene1.in"; }
 
-    static scene::Scene readScene1()
-    {
-        return scene::parseSceneFile(scene1Path());
-    }
+    static scene::Scene readScene1() { return scene::parseSceneFile(scene1Path()); }
 
     // Presses C and reads back the camera it writes to scene.camera (scene1's objects after
     // it); none, with a failure, where the window does not say it wrote it.
@@ -358,8 +357,7 @@ TEST_F(InteractiveWindow, TouchingOrSavingTheSceneUnchangedKeepsTheAccumulation)
     writeScene(sceneText(kRed));
     title = firstRestartWithin(1.0);
     EXPECT_EQ(title.find("reloaded"), std::string::npos) << "saved unchanged: " << title;
-    EXPECT_GE(samplesInTitle(title), 8) << "saved unchanged: the accumulation restarted: "
-                                        << title;
+    EXPECT_GE(samplesInTitle(title), 8) << "saved unchanged: the accumulation restarted: " << title;
     // Another file, the same scene: read, found to change nothing, and said so.
     writeScene("# a comment\n" + sceneText(kRed));
     const std::string commented = waitForTitleWith("changes nothing", 5.0);
@@ -417,8 +415,7 @@ TEST_F(InteractiveWindow, ResizingRendersAtTheNewSize)
     xdotool({"windowsize", std::to_string(window_), "200", "100"});
     const std::string resized = waitForTitleWith("200x100");
     EXPECT_NE(resized.find("200x100"), std::string::npos)
-        << "the image is rendered at the window's new size, so its aspect stays right: "
-        << resized;
+        << "the image is rendered at the window's new size, so its aspect stays right: " << resized;
 }
 
 // How deep `point` lies in the scene's polyhedra (its walls, floor and ceiling): the most of
@@ -549,7 +546,8 @@ TEST_F(InteractiveWindow, ClosingBeforeTheSamplesAskedForIsAnInterruptedRender)
     ASSERT_GE(samplesInTitle(waitForSamples(2)), 2);
     const ProcessResult result = close();
     EXPECT_TRUE(result.exited && result.exitStatus == 130)
-        << "like Ctrl-C: " << result.describeEnd() << "\n" << result.standardOutput;
+        << "like Ctrl-C: " << result.describeEnd() << "\n"
+        << result.standardOutput;
     EXPECT_NE(result.standardOutput.find("(interrupted)"), std::string::npos)
         << result.standardOutput;
     EXPECT_TRUE(fs::exists(folder_ / "out.png")) << "what was rendered is still written";

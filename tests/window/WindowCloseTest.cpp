@@ -30,12 +30,12 @@ void pressEscapeInTheWindowWhenItOpens(const fs::path& folder)
             runProcess({"/bin/sh", "-c",
                         "xdotool search --name '^raytracer - .* [1-9][0-9]* spp' | head -n 1"},
                        options);
-        const std::string window = found.standardOutput.substr(
-            0, found.standardOutput.find_first_of("\r\n"));
+        const std::string window =
+            found.standardOutput.substr(0, found.standardOutput.find_first_of("\r\n"));
         if (!window.empty()) {
             runProcess({"/bin/sh", "-c",
-                        "xdotool windowfocus --sync " + window + " mousemove --window " +
-                            window + " 8 8 key Escape"},
+                        "xdotool windowfocus --sync " + window + " mousemove --window " + window +
+                            " 8 8 key Escape"},
                        options);
             return;
         }

@@ -73,8 +73,8 @@ std::string windowTitle(unsigned long window)
     return title;
 }
 
-std::string waitForTitle(unsigned long window, const std::function<bool(const std::string&)>& accept,
-                         double seconds)
+std::string waitForTitle(unsigned long window,
+                         const std::function<bool(const std::string&)>& accept, double seconds)
 {
     const auto start = std::chrono::steady_clock::now();
     std::string title = windowTitle(window);

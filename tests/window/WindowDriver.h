@@ -19,8 +19,8 @@ std::string windowTitle(unsigned long window);
 
 // Waits up to `seconds` for the title to satisfy `accept`; returns the last title read
 // either way (the caller checks it with `accept` again for its message).
-std::string waitForTitle(unsigned long window, const std::function<bool(const std::string&)>& accept,
-                         double seconds);
+std::string waitForTitle(unsigned long window,
+                         const std::function<bool(const std::string&)>& accept, double seconds);
 
 // The samples per pixel the title gives ("... - 42 spp, ..."), or -1.
 int samplesInTitle(const std::string& title);

@@ -22,19 +22,19 @@ TEST(WindowPicture, MatchesTheHeadlessPictureOfTheSameSeed)
 {
     ASSERT_NE(std::getenv("DISPLAY"), nullptr)
         << "run this test through run-under-xvfb.sh, which provides a display";
-    const fs::path folder = fs::temp_directory_path() / ("raytracer-window-" +
-                                                         std::to_string(::getpid()));
+    const fs::path folder =
+        fs::temp_directory_path() / ("raytracer-window-" + std::to_string(::getpid()));
     fs::create_directories(folder);
     const std::string scene = (sourceDirectory() / "scenes" / "scene3.in").string();
     ProcessOptions options;
     options.workingDirectory = folder;
 
-    const ProcessResult window =
-        runProcess({RAYTRACER_EXECUTABLE, scene, "64", "48", "--spp", "8", "--seed", "3",
-                    "--output", "window.png"},
-                   options);
+    const ProcessResult window = runProcess({RAYTRACER_EXECUTABLE, scene, "64", "48", "--spp", "8",
+                                             "--seed", "3", "--output", "window.png"},
+                                            options);
     ASSERT_TRUE(window.exited && window.exitStatus == 0)
-        << "the window render failed: " << window.describeEnd() << "\n" << window.standardError;
+        << "the window render failed: " << window.describeEnd() << "\n"
+        << window.standardError;
     const ProcessResult headless =
         runProcess({RAYTRACER_EXECUTABLE, scene, "64", "48", "--spp", "8", "--seed", "3",
                     "--output", "headless.png", "--headless"},
@@ -73,19 +73,18 @@ TEST(WindowTargetError, EndsAtTheTargetAndSaysSo)
 {
     ASSERT_NE(std::getenv("DISPLAY"), nullptr)
         << "run this test through run-under-xvfb.sh, which provides a display";
-    const fs::path folder = fs::temp_directory_path() / ("raytracer-window-target-" +
-                                                         std::to_string(::getpid()));
+    const fs::path folder =
+        fs::temp_directory_path() / ("raytracer-window-target-" + std::to_string(::getpid()));
     fs::create_directories(folder);
     const std::string scene = (sourceDirectory() / "scenes" / "scene5.in").string();
     ProcessOptions options;
     options.workingDirectory = folder;
-    const ProcessResult window =
-        runProcess({RAYTRACER_EXECUTABLE, scene, "64", "48", "60", "--target-error", "0.1",
-                    "--output", "window.png"},
-                   options);
+    const ProcessResult window = runProcess({RAYTRACER_EXECUTABLE, scene, "64", "48", "60",
+                                             "--target-error", "0.1", "--output", "window.png"},
+                                            options);
     fs::remove_all(folder);
-    ASSERT_TRUE(window.exited && window.exitStatus == 0)
-        << window.describeEnd() << "\n" << window.standardError;
+    ASSERT_TRUE(window.exited && window.exitStatus == 0) << window.describeEnd() << "\n"
+                                                         << window.standardError;
     EXPECT_NE(window.standardOutput.find("(target 10 %, uniform sampling: reached)"),
               std::string::npos)
         << window.standardOutput;
