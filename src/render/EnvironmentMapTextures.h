@@ -4,6 +4,7 @@
 // repeating in longitude and clamped at the poles; and the CDFs, read texel by texel.
 #include "gl/Texture.h"
 #include "render/EnvironmentMap.h"
+#include "render/TextureUnits.h"
 
 namespace render {
 
@@ -11,9 +12,8 @@ struct EnvironmentMapTextures {
     gl::Texture radiance{GL_TEXTURE_2D};
     gl::Texture distribution{GL_TEXTURE_2D};
 
-    // The texture units the path tracer binds them to.
-    static constexpr int kRadianceUnit = 5;
-    static constexpr int kDistributionUnit = 6;
+    static constexpr int kRadianceUnit = texture_units::kEnvironmentRadiance;
+    static constexpr int kDistributionUnit = texture_units::kEnvironmentDistribution;
     void bind() const;
 };
 

@@ -2,17 +2,17 @@
 
 #include "gl/GlError.h"
 #include "render/PathTracerProgram.h"
+#include "render/TextureUnits.h"
 #include "shadergen/ShaderSource.h"
 
 namespace render {
 
 namespace {
 
-// Units 12 to 15 are the feature buffers' (render/ProgressiveRenderer.cpp).
-constexpr int kAlbedoDepthUnit = 12;
-constexpr int kNormalCoverageUnit = 13;
-constexpr int kSourceUnit = 14;
-constexpr int kMomentsUnit = 15;
+constexpr int kAlbedoDepthUnit = texture_units::kAlbedoDepth;
+constexpr int kNormalCoverageUnit = texture_units::kNormalCoverage;
+constexpr int kSourceUnit = texture_units::kDenoiserSource;
+constexpr int kMomentsUnit = texture_units::kDenoiserMoments;
 
 // Tuned by eye on the classic scenes at 1 to 64 samples per pixel (docs/DENOISING.md).
 constexpr float kColorSigma = 4.0f;

@@ -1,6 +1,7 @@
 #include "render/ProgressiveRenderer.h"
 
 #include "gl/GlError.h"
+#include "render/TextureUnits.h"
 
 #include <algorithm>
 #include <chrono>
@@ -12,14 +13,12 @@ namespace render {
 
 namespace {
 
-// The texture units the path tracer's samplers read.
-constexpr int kEstimateUnit = 0;
-constexpr int kMomentsUnit = 1;
-constexpr int kPigmentTexturesUnit = 3;
-constexpr int kTileSampleTargetsUnit = 4;
-// Feature buffers (--feature-buffers): units 12 to 15 are theirs.
-constexpr int kAlbedoDepthUnit = 12;
-constexpr int kNormalCoverageUnit = 13;
+constexpr int kEstimateUnit = texture_units::kPreviousEstimate;
+constexpr int kMomentsUnit = texture_units::kPreviousMoments;
+constexpr int kPigmentTexturesUnit = texture_units::kPigmentTextures;
+constexpr int kTileSampleTargetsUnit = texture_units::kTileSampleTargets;
+constexpr int kAlbedoDepthUnit = texture_units::kAlbedoDepth;
+constexpr int kNormalCoverageUnit = texture_units::kNormalCoverage;
 
 double secondsSince(std::chrono::steady_clock::time_point start)
 {

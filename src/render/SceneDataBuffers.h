@@ -6,6 +6,7 @@
 // shape_interpreter.glsl says what each holds.
 #include "gl/TextureBuffer.h"
 #include "render/SceneUniforms.h"
+#include "render/TextureUnits.h"
 #include "shadergen/SceneShaderGenerator.h"
 
 #include <cstddef>
@@ -16,11 +17,11 @@ class ProgramUniforms;
 
 class SceneDataBuffers {
 public:
-    static constexpr int kShapeParametersUnit = 7;
-    static constexpr int kShapeProgramUnit = 8;
-    static constexpr int kObjectRecordsUnit = 9;
-    static constexpr int kHierarchyBoxesUnit = 10;
-    static constexpr int kHierarchyLinksUnit = 11;
+    static constexpr int kShapeParametersUnit = texture_units::kShapeParameters;
+    static constexpr int kShapeProgramUnit = texture_units::kShapeProgram;
+    static constexpr int kObjectRecordsUnit = texture_units::kObjectRecords;
+    static constexpr int kHierarchyBoxesUnit = texture_units::kHierarchyBoxes;
+    static constexpr int kHierarchyLinksUnit = texture_units::kHierarchyLinks;
 
     SceneDataBuffers(const SceneUniforms& uniforms, const shadergen::SceneShaderCode& code);
 
