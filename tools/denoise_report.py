@@ -287,7 +287,8 @@ def main():
             "fig02-materials-cornell", "fig03-shadows-point-light", "fig03-shadows-sphere-light",
             "fig04-csg-solid", "fig06-triplanar-textures", "fig07-glass-textures-lights",
             "fig09-glass-mirrors-checker", "fig10-many-objects-glossy-floor", "fig11-torus-knot",
-            "fig12-csg-diffuse", "fig13-glass-mirror-cornell", "fig14-smooth-csg-cornell")])
+            "fig12-csg-diffuse", "fig13-glass-mirror-cornell", "fig14-smooth-csg-cornell",
+            "thin-bars")])
     parser.add_argument("--raytracer", default=os.path.join(ROOT, "build", "raytracer"))
     parser.add_argument("--size", type=int, nargs=2, default=[160, 120])
     parser.add_argument("--spp", type=int, nargs="+", default=[4, 16, 64, 256])
@@ -299,10 +300,13 @@ def main():
                         default=["scene1", "scene7", "fig03-shadows-sphere-light",
                                  "fig06-triplanar-textures", "fig07-glass-textures-lights",
                                  "fig10-many-objects-glossy-floor", "fig11-torus-knot",
-                                 "fig13-glass-mirror-cornell"],
+                                 "fig13-glass-mirror-cornell", "thin-bars"],
                         help="scenes whose 16-spp error image the page shows")
     parser.add_argument("--gallery", default="scene1", help="scene of docs/denoising-*.png")
     parser.add_argument("--timing-sizes", default="800x600,1920x1080")
+    parser.add_argument("--no-section", action="store_true",
+                        help="write the error images and print the rows, but neither time the "
+                             "denoiser nor rewrite the section (a scene added to it)")
     args = parser.parse_args()
     os.makedirs(args.images, exist_ok=True)
 
@@ -319,6 +323,17 @@ def main():
         if name == args.gallery and 16 in images:
             gallery(args, name, reference, images, 16)
     args.error_images = shown
+    if args.no_section:
+        for name, _, rows, _ in results:
+            for row in rows:
+                print(f"| {name} | {row['spp']} | {row['raw_rmse']:.4f} | "
+                      f"{row['denoised_rmse']:.4f} | {row['raw_flip']:.4f} | "
+                      f"{row['denoised_flip']:.4f} | {100 * row['brightest_share']:.0f} % | "
+                      f"{row['brightness']:.4f} |")
+            print(f"| {name} | {crossover(rows, 'rmse')} | {crossover(rows, 'flip')} |")
+        for name, path in shown:
+            print(name, path)
+        return
 
     timings = []
     for size in args.timing_sizes.split(","):

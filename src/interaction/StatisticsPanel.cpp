@@ -3,6 +3,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -75,12 +76,36 @@ bool StatisticsPanel::wantsKeyboard() const
     return visible_ && ImGui::GetIO().WantCaptureKeyboard;
 }
 
+void StatisticsPanel::recordLayout(const ImVec2& display)
+{
+    // Called after the last item, inside the panel's Begin and End.
+    const ImGuiWindow* window = ImGui::GetCurrentWindow();
+    layout_.shown = true;
+    layout_.displayWidth = display.x;
+    layout_.displayHeight = display.y;
+    layout_.left = window->Pos.x;
+    layout_.top = window->Pos.y;
+    layout_.right = window->Pos.x + window->Size.x;
+    layout_.bottom = window->Pos.y + window->Size.y;
+    layout_.visibleLeft = window->InnerClipRect.Min.x;
+    layout_.visibleRight = window->InnerClipRect.Max.x;
+    layout_.visibleTop = window->InnerClipRect.Min.y;
+    layout_.visibleBottom = window->InnerClipRect.Max.y;
+    layout_.lastItemBottom = ImGui::GetItemRectMax().y;
+    layout_.contentRight = window->DC.CursorMaxPos.x;
+    layout_.scrollX = ImGui::GetScrollX();
+    layout_.scrollMaxX = ImGui::GetScrollMaxX();
+    layout_.scrollY = ImGui::GetScrollY();
+    layout_.scrollMaxY = ImGui::GetScrollMaxY();
+}
+
 PanelSettings StatisticsPanel::draw(const PanelReadings& readings, const PanelSettings& settings)
 {
     PanelSettings tuned = settings;
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
+    layout_ = PanelLayout{};
     if (visible_) {
         // Never larger than the window: in a small window the panel scrolls (the wheel over
         // it, or its scroll bar), so that every part of it can be reached.
@@ -96,6 +121,7 @@ PanelSettings StatisticsPanel::draw(const PanelReadings& readings, const PanelSe
                          ImGuiWindowFlags_HorizontalScrollbar);
         ImGui::Text("%dx%d   %d spp   %.2f spp/s   %.1f s", readings.width, readings.height,
                     readings.samplesPerPixel, readings.samplesPerSecond, readings.elapsedSeconds);
+        layout_.firstItemTop = ImGui::GetItemRectMin().y;
         if (readings.previewing)
             ImGui::Text("moving: 1 sample per frame, 1/%d resolution, %.1f fps",
                         readings.previewDivisor, readings.previewFramesPerSecond);
@@ -163,6 +189,7 @@ PanelSettings StatisticsPanel::draw(const PanelReadings& readings, const PanelSe
         ImGui::TextDisabled("%s", kHelp);
         ImGui::TextDisabled("resizing the window renders at its new size");
         ImGui::PopTextWrapPos();
+        recordLayout(display);
         ImGui::End();
     }
     ImGui::Render();

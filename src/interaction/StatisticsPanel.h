@@ -8,6 +8,7 @@
 
 struct GLFWwindow;
 struct ImGuiContext;
+struct ImVec2;
 
 namespace interaction {
 
@@ -45,6 +46,33 @@ struct PanelSettings {
     bool operator!=(const PanelSettings& other) const { return !(*this == other); }
 };
 
+// Where the last draw put the panel and its items, in the window's pixels (y down), at the
+// scroll it was drawn at: what a test needs to tell that every part of it can be reached.
+struct PanelLayout {
+    bool shown = false;
+    float displayWidth = 0.0f;
+    float displayHeight = 0.0f;
+    // The panel's window, title bar and scroll bars included.
+    float left = 0.0f;
+    float top = 0.0f;
+    float right = 0.0f;
+    float bottom = 0.0f;
+    // Where its items show (the window less its title bar, padding and scroll bars).
+    float visibleLeft = 0.0f;
+    float visibleRight = 0.0f;
+    float visibleTop = 0.0f;
+    float visibleBottom = 0.0f;
+    // The first item's top and the last item's bottom.
+    float firstItemTop = 0.0f;
+    float lastItemBottom = 0.0f;
+    // The right edge of the widest item.
+    float contentRight = 0.0f;
+    float scrollX = 0.0f;
+    float scrollMaxX = 0.0f;
+    float scrollY = 0.0f;
+    float scrollMaxY = 0.0f;
+};
+
 // The on-screen statistics and settings, drawn with Dear ImGui over the picture (Tab shows
 // or hides it). It starts hidden: shown, it covers most of a small window and takes the
 // mouse drags that start over it, so a fresh window would not answer the mouse. It owns the
@@ -64,6 +92,8 @@ public:
     // settings as the user left them.
     PanelSettings draw(const PanelReadings& readings, const PanelSettings& settings);
 
+    const PanelLayout& layout() const { return layout_; }
+
     // Whether the panel's "write camera line" button was pressed since the last call.
     bool takeCameraLineRequest();
 
@@ -75,9 +105,12 @@ public:
     static const char* const kHelp;
 
 private:
+    void recordLayout(const ImVec2& display);
+
     ImGuiContext* context_ = nullptr;
     bool visible_ = false;
     bool cameraLineRequested_ = false;
+    PanelLayout layout_;
 };
 
 }  // namespace interaction
