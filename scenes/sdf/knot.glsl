@@ -12,6 +12,11 @@
 // 1.4 there) rather than the half a global factor of 2 would give. Away from the knot the
 // distance to the torus that holds both strands (2.35 from the core) is the better bound.
 // @bound 8.5
+// Both strands lie in the slab of the torus that holds them, |z| <= 2.35 about x: rays that
+// cross the ball but not the slab (or cross the slab steeply, as shadow rays towards the
+// light in front of the knot do) march none or only a short part of it.
+// @hull 0 0  1 2.4
+// @hull 0 0 -1 2.4
 
 float knot(vec3 p, vec3 x)
 {

@@ -52,3 +52,56 @@ void cullByBall(inout RayCulling culling, uint bit, vec4 ball, vec3 origin, vec3
     culling.escapeDistance = max(culling.escapeDistance, exit);
     culling.entryDistance = min(culling.entryDistance, max(along - halfChord, 0.0));
 }
+
+// A piece inside a ball and behind planes (N, W) (inside where dot(N, p) + W <= 0: a user
+// SDF's `@hull`), written by the scene's code as
+//   BallChord chord = ballChord(ball, ...); clipChord(chord, plane, ...) for each plane;
+//   approachChord(culling, bit, chord);
+// (the planes by constant slots: an index computed at run time into the scene's values,
+// which the shader holds as a local array, makes llvmpipe keep the whole array in memory).
+// The ball's chord is clipped by each plane moved out by the ball's margin: within the chord
+// the ray's tolerance is at most that margin, so a ray that comes within its tolerance of
+// the piece does so inside the clipped chord.
+struct BallChord {
+    float entry;
+    float exit;    // below entry: the ray passes the piece by
+    float margin;  // the largest tolerance the ray has within the chord
+};
+
+BallChord ballChord(vec4 ball, vec3 origin, vec3 direction, float tolerance0,
+                    float toleranceGrowth)
+{
+    vec3 toCenter = ball.xyz - origin;
+    float along = dot(toCenter, direction);
+    float margin = 1.25 * (tolerance0 + toleranceGrowth * (max(along, 0.0) + ball.w)) /
+                   (1.0 - toleranceGrowth);
+    float reach = ball.w + margin;
+    vec3 offAxis = toCenter - along * direction;
+    float halfChordSquared = reach * reach - dot(offAxis, offAxis);
+    if (halfChordSquared < 0.0)
+        return BallChord(0.0, -1.0, margin);
+    float halfChord = sqrt(halfChordSquared);
+    return BallChord(max(along - halfChord, 0.0), along + halfChord, margin);
+}
+
+void clipChord(inout BallChord chord, vec4 plane, vec3 origin, vec3 direction)
+{
+    // Where along the ray dot(N, p) + W - margin changes sign, and which way.
+    float height = dot(plane.xyz, origin) + plane.w - chord.margin;
+    float rate = dot(plane.xyz, direction);
+    if (rate > 0.0)
+        chord.exit = min(chord.exit, -height / rate);
+    else if (rate < 0.0)
+        chord.entry = max(chord.entry, -height / rate);
+    else if (height > 0.0)
+        chord.exit = -1.0;
+}
+
+void approachChord(inout RayCulling culling, uint bit, BallChord chord)
+{
+    if (chord.exit < chord.entry)
+        return;
+    culling.mask |= bit;
+    culling.escapeDistance = max(culling.escapeDistance, chord.exit);
+    culling.entryDistance = min(culling.entryDistance, chord.entry);
+}

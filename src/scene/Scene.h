@@ -79,14 +79,20 @@ struct Finish {
 // `float NAME(vec3 p, vec3 x)` from a GLSL file. The file may declare, in comment lines,
 //   // @bound R        every point of the surface lies within R of the position x
 //   // @lipschitz L    the function may overestimate the distance by up to a factor L
+//   // @hull NX NY NZ D  every point of the surface lies where dot(N, p - x) <= D
 // The first lets the renderer skip the function far from it; the second makes the sphere
-// tracer take steps of distance / L, so a non-Lipschitz function does not tunnel.
+// tracer take steps of distance / L, so a non-Lipschitz function does not tunnel; the third
+// (one line per plane) lets rays that pass the bound's ball but not the hull's planes leave
+// the function out of their marches.
 struct UserSdf {
     std::string name;
     std::filesystem::path sourcePath;
     glm::vec3 position{0.0f};
     std::optional<float> boundingRadius;
     float lipschitz = 1.0f;
+    // `// @hull` planes about the position: (N, W) with N of unit length, the surface where
+    // dot(N, p - position) + W <= 0 (W = -D / |N| for the declared N and D).
+    std::vector<glm::vec4> hullPlanes;
     // `// @intersect FUNCTION`: the file's closed-form intersection of the shape, which rays
     // use instead of marching it (docs/SCENE_FORMAT.md).
     std::optional<std::string> intersectFunction;

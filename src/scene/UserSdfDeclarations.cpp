@@ -22,6 +22,39 @@ bool isGlslIdentifier(const std::string& word)
     return allWordCharacters && word.rfind("gl_", 0) != 0 && word.find("__") == std::string::npos;
 }
 
+namespace {
+
+// `NX NY NZ D` after @hull: a plane the whole surface lies behind.
+void readHullPlane(UserSdf& user, const std::string& text, int lineNumber)
+{
+    std::istringstream words(text);
+    float values[4] = {};
+    std::string word;
+    int count = 0;
+    bool valid = true;
+    while (words >> word) {
+        float value = 0.0f;
+        const char* last = word.data() + word.size();
+        const auto [end, error] = std::from_chars(word.data(), last, value);
+        if (count == 4 || error != std::errc() || end != last || !std::isfinite(value)) {
+            valid = false;
+            break;
+        }
+        values[count++] = value;
+    }
+    const glm::vec3 normal(values[0], values[1], values[2]);
+    const float length = glm::length(normal);
+    if (!valid || count != 4 || !(length > 0.0f))
+        throw SceneError(user.sourcePath.string(), lineNumber, word.empty() ? "@hull" : word,
+                         "a plane's normal and offset after @hull, four numbers NX NY NZ D "
+                         "with a normal other than 0 0 0");
+    // Offsets along the unit normal: D was measured along N.
+    const glm::vec3 unit = normal / length;
+    user.hullPlanes.emplace_back(unit, -values[3] / length);
+}
+
+}  // namespace
+
 void readUserSdfDeclarations(UserSdf& user)
 {
     std::ifstream file(user.sourcePath);
@@ -45,6 +78,10 @@ void readUserSdfDeclarations(UserSdf& user)
                                  "the name of the GLSL function that intersects the shape "
                                  "after @intersect, alone");
             user.intersectFunction = valueText;
+            continue;
+        }
+        if (key == "@hull") {
+            readHullPlane(user, line.substr(at + key.size()), lineNumber);
             continue;
         }
         if (key != "@bound" && key != "@lipschitz")

@@ -4,10 +4,10 @@
 
 namespace scene {
 
-// Reads the `// @bound R`, `// @lipschitz L` and `// @intersect FUNCTION` declarations of the
-// user SDF file at user.sourcePath into `user`. A declaration the renderer would silently
+// Reads the `// @bound R`, `// @lipschitz L`, `// @hull NX NY NZ D` and `// @intersect
+// FUNCTION` declarations of the user SDF file at user.sourcePath into `user`. A declaration the renderer would silently
 // ignore is an error (SceneError naming the file, line and value): a dropped @lipschitz
-// makes an overestimating function tunnel, a dropped @bound or @intersect only costs time
+// makes an overestimating function tunnel, a dropped @bound, @hull or @intersect only costs time
 // but is as surely a typo.
 void readUserSdfDeclarations(UserSdf& user);
 

@@ -88,6 +88,19 @@ ScenePlan planScene(const Scene& scene, ShapeCompiler& compiler, bool marchBoxes
             ++plan.marchedSurfaceCount;
         }
         if (piece) {
+            if (const auto* user = std::get_if<UserSdf>(&shape.geometry);
+                user && !user->hullPlanes.empty()) {
+                std::vector<glm::vec4> planes;
+                for (const glm::vec4& relative : user->hullPlanes) {
+                    const glm::vec3 normal(relative);
+                    glm::vec4 plane(normal, relative.w - glm::dot(normal, user->position));
+                    if (shape.transform)
+                        plane = applyTransformToPlane(*shape.transform, plane);
+                    planes.push_back(plane);
+                }
+                piece->hullSlot = compiler.allocateValues(planes);
+                piece->hullPlanes = static_cast<int>(planes.size());
+            }
             const auto reserved = lightBits.find(i);
             const std::optional<std::uint32_t> bit =
                 reserved != lightBits.end() ? std::optional<std::uint32_t>(reserved->second)

@@ -18,9 +18,14 @@ namespace shadergen {
 // (shaders/modules/ray_culling.glsl): a bounding ball in uShapeParameters, and the bit that
 // stands for it in the ray's mask. (Shapes without a bound that have a closed form, planes
 // and cones, are met exactly and never marched.)
+// A user SDF that declares `// @hull` planes is culled by them too: a ray that passes
+// the ball but not the planes leaves the piece out as well.
 struct CullingPiece {
     int slot = -1;
     std::uint32_t bit = 0;
+    int hullSlot = -1;   // the first of the hull's planes in world space, (N, W): inside where
+                         // dot(N, p) + W <= 0
+    int hullPlanes = 0;  // how many; 0: the ball alone
 };
 
 // The ray's mask has this many bits; objects beyond them are never culled.

@@ -117,7 +117,15 @@ std::string specializedSceneFunctions(const ScenePlan& plan, const std::string& 
            "    RayCulling culling = RayCulling(0u, 0.0, FLOAT_MAX);\n";
     for (const std::vector<const ObjectPlan*>* objects : {&cheap, &bounded})
         for (const ObjectPlan* object : *objects)
-            if (object->culling)
+            if (object->culling && object->culling->hullPlanes > 0) {
+                const CullingPiece& piece = *object->culling;
+                out << "    {\n        BallChord chord = ballChord(" << parameterSlot(piece.slot)
+                    << ", origin, direction, tolerance0, toleranceGrowth);\n";
+                for (int k = 0; k < piece.hullPlanes; ++k)
+                    out << "        clipChord(chord, " << parameterSlot(piece.hullSlot + k)
+                        << ", origin, direction);\n";
+                out << "        approachChord(culling, " << piece.bit << "u, chord);\n    }\n";
+            } else if (object->culling)
                 out << "    cullByBall(culling, " << object->culling->bit << "u, "
                     << parameterSlot(object->culling->slot)
                     << ", origin, direction, tolerance0, toleranceGrowth);\n";

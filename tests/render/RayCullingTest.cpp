@@ -102,6 +102,33 @@ solid 0.8 0.8 0.8
 0 0 rounded_box 1.5 0.5 0.5  0.3 0.5 0.3  0.05
 )";
 
+// User SDFs culled by the planes their files declare (`// @hull`) as well as their balls: the
+// molecule of classic scene 6 (scenes/sdf/lattice.glsl: a tetrahedron and a cube about it),
+// turned and enlarged, and the knot of scene 4 (scenes/sdf/knot.glsl: the slab that holds
+// it), turned on its side and shrunk, in a room with a sphere light, so that shadow rays
+// cross the planes at every angle. A hull that cuts the molecule's atoms to a triangle
+// (its tetrahedron's planes at 0.5 instead of 0.97) fails (capped z^2 1500 against 1322);
+// one that shaves only their tips passes, as any local error too small for the comparison.
+const char* const kHulls = R"(
+0 0 5.5   0 0 0   0 1 0   60
+1
+2 2 4   10 10 10
+3
+solid 0.8 0.8 0.8
+solid 0.9 0.2 0.1
+solid 0.2 0.4 0.9
+3
+0 0 0  0 0 0 0
+0 0 0  0 0 1 1.5
+8 8 8  0 0 0 0
+5
+0 0 polyhedron 4  0 1 0 3  0 -1 0 3  0 0 1 4  1 0 0 4
+1 0 translate -0.8 0.2 0 rotate 0 1 0 30 scale 1.5 lattice 0 0 0
+2 0 translate 1.6 -1.2 -1.5 scale 0.3 rotate 1 0 0 70 knot 0 0 0
+0 2 sphere 1.5 2.6 1.5  0.3
+0 0 polyhedron 1  -1 0 0 4
+)";
+
 class RayCulling : public ::testing::TestWithParam<CullingCase> {};
 
 TEST_P(RayCulling, RenderAgreesWithTheUnculledRender)
@@ -126,7 +153,10 @@ TEST_P(RayCulling, GeneralShaderThroughTheHierarchyAgreesWithTheSpecialisedShade
     // written) without a sample and discards none: their paths are abandoned at llvmpipe's
     // loop budget (constants.glsl) each time, marching without ray culling; not yet
     // explained further. The comparison refuses an empty pixel.
-    if (GetParam().name == "ClosedRoom")
+    // The room of user SDFs (kHulls) does the same: 9 pixels as this was written, in the
+    // general shader's render (which reads no hull planes); the specialised render has a
+    // sample in every pixel.
+    if (GetParam().name == "ClosedRoom" || GetParam().name == "UserSdfHulls")
         GTEST_SKIP() << "a few pixels of the general shader's render are left without a sample";
     const scene::Scene scene = sceneFromText(GetParam().scene, GetParam().name + ".in");
     settings::RenderSettings specialized = settingsWithSeed(23);
@@ -139,14 +169,12 @@ TEST_P(RayCulling, GeneralShaderThroughTheHierarchyAgreesWithTheSpecialisedShade
                                      << comparison.describe();
 }
 
-INSTANTIATE_TEST_SUITE_P(Scene, RayCulling,
-                         ::testing::Values(CullingCase{"ClosedRoom", kRoom},
-                                           CullingCase{"GrazingHorizon", kHorizon},
-                                           CullingCase{"InsideGlass", kInsideGlass},
-                                           CullingCase{"WideAngle", kWideAngle}),
-                         [](const ::testing::TestParamInfo<CullingCase>& info) {
-                             return info.param.name;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Scene, RayCulling,
+    ::testing::Values(CullingCase{"ClosedRoom", kRoom}, CullingCase{"GrazingHorizon", kHorizon},
+                      CullingCase{"InsideGlass", kInsideGlass},
+                      CullingCase{"WideAngle", kWideAngle}, CullingCase{"UserSdfHulls", kHulls}),
+    [](const ::testing::TestParamInfo<CullingCase>& info) { return info.param.name; });
 
 }  // namespace
 }  // namespace render_tests

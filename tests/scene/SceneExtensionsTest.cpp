@@ -482,6 +482,33 @@ TEST_F(UserSdfFiles, UnusableDeclarationIsAnErrorNamingTheShaderFileAndLine)
     }
 }
 
+TEST_F(UserSdfFiles, DeclareHullPlanesThatTheSurfaceLiesBehind)
+{
+    write("blob.glsl", "// @bound 2\n// @hull 0 0 2 1.5\n// @hull -1 0 0 0.25\n"
+                       "float blob(vec3 p, vec3 x) { return length(p - x) - 1.0; }\n");
+    const UserSdf user = parseUserSdf("blob");
+    ASSERT_EQ(user.hullPlanes.size(), 2u);
+    // Unit normals; the offset measured along the declared normal (1.5 / |(0, 0, 2)|).
+    EXPECT_EQ(user.hullPlanes[0], glm::vec4(0.0f, 0.0f, 1.0f, -0.75f));
+    EXPECT_EQ(user.hullPlanes[1], glm::vec4(-1.0f, 0.0f, 0.0f, -0.25f));
+}
+
+TEST_F(UserSdfFiles, AHullPlaneThatIsNotFourNumbersIsAnErrorNamingTheShaderFileAndLine)
+{
+    for (const char* declaration : {"// @hull 0 0 1\n", "// @hull 0 0 1 2 3\n",
+                                    "// @hull 0 0 0 1\n", "// @hull 0 0 one 1\n", "// @hull\n"}) {
+        write("blob.glsl", std::string("// A blob.\n") + declaration +
+                               "float blob(vec3 p, vec3 x) { return length(p - x) - 1.0; }\n");
+        try {
+            parseUserSdf("blob");
+            ADD_FAILURE() << declaration << " was accepted";
+        } catch (const SceneError& error) {
+            EXPECT_EQ(error.file(), (folder_ / "blob.glsl").string()) << declaration;
+            EXPECT_EQ(error.line(), 2) << declaration;
+        }
+    }
+}
+
 TEST_F(UserSdfFiles, DeclareTheFunctionThatIntersectsTheShape)
 {
     write("blob.glsl", "// @intersect blobIntersect\n"

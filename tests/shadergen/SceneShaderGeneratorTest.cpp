@@ -202,6 +202,39 @@ TEST(RayCulling, AUserSdfIsMetExactlyWhereItsFileDeclaresAnIntersection)
     EXPECT_TRUE(code.plan.objects[1].culling) << "the knot is marched, culled by its bound";
 }
 
+// The hull planes of the piece with culling bit `bit`, in world space.
+std::vector<glm::vec4> culledHull(const SceneShaderCode& code, unsigned bit)
+{
+    for (const shadergen::ObjectPlan& object : code.plan.objects)
+        if (object.culling && object.culling->bit == bit) {
+            std::vector<glm::vec4> planes;
+            for (int k = 0; k < object.culling->hullPlanes; ++k)
+                planes.push_back(code.shapeParameters.at(object.culling->hullSlot + k));
+            return planes;
+        }
+    throw std::runtime_error("no piece with bit " + std::to_string(bit) + " planned");
+}
+
+TEST(RayCulling, AUserSdfIsCulledByTheHullPlanesItsFileDeclares)
+{
+    // scenes/sdf/knot.glsl declares the slab |z| <= 2.4 about its position; the second knot is
+    // turned a quarter about x and moved, so its slab is |y - 1| <= 2.4 (scaled by 2: 4.8).
+    const SceneShaderCode code =
+        specialized("0 0 knot 0 0 -8\n0 0 translate 0 1 0 scale 2 rotate 1 0 0 90 knot 0 0 0\n", 2);
+    const std::vector<glm::vec4> slab = culledHull(code, 1);
+    ASSERT_EQ(slab.size(), 2u);
+    expectNear(slab[0], {0, 0, 1, -2.4f + 8.0f});
+    expectNear(slab[1], {0, 0, -1, -2.4f - 8.0f});
+    const std::vector<glm::vec4> turned = culledHull(code, 2);
+    ASSERT_EQ(turned.size(), 2u);
+    expectNear(turned[0], {0, -1, 0, -4.8f + 1.0f});
+    expectNear(turned[1], {0, 1, 0, -4.8f - 1.0f});
+    const std::string culling = functionBody(code.sceneFunctions, "RayCulling sceneRayCulling(");
+    EXPECT_EQ(occurrences(culling, R"(clipChord\(chord, SHAPE_PARAMETER\([0-9]+\), )"), 4)
+        << "each plane by a constant slot";
+    EXPECT_EQ(occurrences(culling, R"(cullByBall\()"), 0);
+}
+
 TEST(RayCulling, AThinTorusIsStillMarched)
 {
     const SceneShaderCode code = specialized("0 0 torus 0 1 0  2 0.1\n", 1);
