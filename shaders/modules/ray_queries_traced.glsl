@@ -430,7 +430,8 @@ vec3 marchedTransmittance(Surface s, vec3 wi, float cosLeaving, float distance,
             t += 2.0 * tolerance;
 #ifdef MARCHES_OBJECT_BY_OBJECT
             // Marched one object at a time: inside or outside that object.
-            insideSign = sceneDistanceCulled(start.origin + t * wi, culling.mask) < 0.0 ? -1.0 : 1.0;
+            float objectDistanceHere = sceneDistanceCulled(start.origin + t * wi, culling.mask);
+            insideSign = objectDistanceHere < 0.0 ? -1.0 : 1.0;
 #else
             insideSign = sceneDistance(start.origin + t * wi) < 0.0 ? -1.0 : 1.0;
 #endif
@@ -477,7 +478,8 @@ vec3 marchedObjectsTransmittance(Surface s, vec3 wi, float cosLeaving, float dis
         afterT = stretch.x;
         afterObject = object;
         gMarchedObject = object;
-        float objectSign = insideSign < 0.0 && objectDistance(object, start.origin) < 0.0 ? -1.0 : 1.0;
+        float objectSign =
+            insideSign < 0.0 && objectDistance(object, start.origin) < 0.0 ? -1.0 : 1.0;
         transmittance = marchedTransmittance(s, wi, cosLeaving, distance, objectSign,
                                              RayCulling(0xffffffffu, stretch.y, stretch.x),
                                              start.along, tolerance, target, start, transmittance);
