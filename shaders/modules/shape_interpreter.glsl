@@ -288,8 +288,9 @@ void exactSurfacesIntersect(vec3 origin, vec3 direction, float tMin, int only, i
 // distances a march evaluates (the culled forms, which the sphere tracer, the move onto the
 // surface and the normal call) are that one object's, gMarchedObject's, not the scene's. A
 // march step used to walk the whole hierarchy, and every call site of the sphere tracer
-// inlined that walk: a scene of 1,000 objects, a fifth of them rounded boxes, set up in 6 s
-// and rendered 0.004 Mpaths/s at 160x120 (docs/PERFORMANCE.md, "Scenes of many objects").
+// inlined that walk: a scene of 1,000 objects, a fifth of them rounded boxes, set up in 4 s
+// and rendered 0.006 Mpaths/s at 160x120; now 1 s and 0.08 (docs/PERFORMANCE.md, "Scenes of
+// many objects").
 // The normal is the gradient of the hit object's distance, not of the union of every marched
 // object's: they differ only where another marched object comes within the stencil's step
 // (a quarter of the tolerance) of the hit.
