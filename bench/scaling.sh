@@ -9,6 +9,8 @@
 #
 #   bench/scaling.sh [RAYTRACER=build/raytracer] [SPP=8] [W=160 H=120]
 #
+# MARCHED=F makes a fraction F of the balls rounded boxes, which rays march
+# (many_spheres.py --marched).
 # Mesa's shader cache is switched off so that every compile is real. One render per scene:
 # run it with nothing else on the machine.
 set -euo pipefail
@@ -34,7 +36,7 @@ echo "|---:|---|---:|---:|---:|---:|---:|"
 csv="$out/scaling.csv"
 echo "objects,setup_s,hierarchy_s,scene_data_mb,mpaths_per_s,peak_mb" > "$csv"
 for objects in 10 100 1000 10000 100000; do
-    python3 "$root/bench/many_spheres.py" "$objects" > "$work/scene.in"
+    python3 "$root/bench/many_spheres.py" "$objects" ${MARCHED:+--marched "$MARCHED"} > "$work/scene.in"
     /usr/bin/time -v -o "$work/time.txt" "$raytracer" "$work/scene.in" "$width" "$height" \
         --spp "$spp" --headless -o "$work/image.png" > "$work/summary.txt"
     summary="$(cat "$work/summary.txt")"

@@ -74,6 +74,52 @@ MarchHit marchToSurface(vec3 origin, vec3 direction, float insideSign, RayCone c
     return hit;
 }
 
+#ifdef MARCHES_OBJECT_BY_OBJECT
+// The general shader's march (shape_interpreter.glsl): the marched objects of `mask` one at a
+// time, front to back in the order the ray comes near their bounds (nextMarchedObject), each
+// marched as marchToSurface marches, through its own distance only and only along its own
+// stretch of the ray, until no object begins before the nearest hit so far. A ray inside a
+// marched solid (`containing`) can only leave it: that object alone is marched. On return
+// gMarchedObject is the hit's object, whose distance the normal is taken from.
+MarchHit marchObjectByObject(vec3 origin, vec3 direction, float insideSign, RayCone cone,
+                             uint mask, float start, float end, int containing, out vec3 p,
+                             out bool onSurface)
+{
+    MarchHit nearest = marchMiss(end);
+    p = origin;
+    onSurface = false;
+    float tolerance0 = hitTolerance(cone, 0.0);
+    float growth = gHitTolerance * cone.spread;
+    bool inside = insideSign < 0.0 && containing >= 0;
+    float afterT = -FLOAT_MAX;
+    int afterObject = -1;
+    for (int round = 0; loopIterationAllowed(); ++round) {
+        float reach = nearest.found ? nearest.t : end;
+        vec2 stretch = vec2(start, reach);
+        int object = inside ? (round == 0 ? containing : -1)
+                            : nextMarchedObject(origin, direction, tolerance0, growth, mask,
+                                                start, reach, afterT, afterObject, stretch);
+        if (object < 0)
+            break;
+        afterT = stretch.x;
+        afterObject = object;
+        gMarchedObject = object;
+        vec3 stop;
+        bool stopOnSurface;
+        MarchHit hit = marchToSurface(origin, direction, insideSign, cone,
+                                      RayCulling(0xffffffffu, stretch.y, stretch.x), start,
+                                      reach, stop, stopOnSurface);
+        if (hit.found && (!nearest.found || hit.t < nearest.t)) {
+            nearest = hit;
+            p = stop;
+            onSurface = stopOnSurface;
+        }
+    }
+    gMarchedObject = nearest.object;
+    return nearest;
+}
+#endif
+
 // The surface a march found (hit.found), at its stop `p`: the object whose surface the
 // point is on, and the normal there. Where the stop is not on the surface even after the
 // near-miss retries, it is projected along the normal, which lands on the surface within the
@@ -174,8 +220,13 @@ SurfaceHit findSurface(vec3 origin, vec3 direction, float insideSign, RayCone co
         end = min(end, start);
     vec3 p;
     bool onSurface;
+#ifdef MARCHES_OBJECT_BY_OBJECT
+    MarchHit hit = marchObjectByObject(origin, direction, insideSign, cone, culling.mask, start,
+                                       end, containing, p, onSurface);
+#else
     MarchHit hit =
         marchToSurface(origin, direction, insideSign, cone, culling, start, end, p, onSurface);
+#endif
     if (hit.found)
         return marchedSurface(hit, p, onSurface, origin, direction, insideSign, cone,
                               containing);
@@ -377,7 +428,13 @@ vec3 marchedTransmittance(Surface s, vec3 wi, float cosLeaving, float distance,
             // Step through the surface; where the step only grazed it, the march goes on
             // from outside and crosses further along.
             t += 2.0 * tolerance;
+#ifdef MARCHES_OBJECT_BY_OBJECT
+            // Marched one object at a time: inside or outside that object.
+            float objectDistanceHere = sceneDistanceCulled(start.origin + t * wi, culling.mask);
+            insideSign = objectDistanceHere < 0.0 ? -1.0 : 1.0;
+#else
             insideSign = sceneDistance(start.origin + t * wi) < 0.0 ? -1.0 : 1.0;
+#endif
             acceptedRadius = 0.0;
             continue;
         }
@@ -397,6 +454,39 @@ vec3 marchedTransmittance(Surface s, vec3 wi, float cosLeaving, float distance,
         t += radius * gStepScale;
     }
     return vec3(0.0);
+}
+#endif
+
+#if HAS_MARCHED_OBJECTS && defined(MARCHES_OBJECT_BY_OBJECT)
+// The general shader's shadow march (shape_interpreter.glsl): every marched object of `mask`
+// whose bound the segment comes near, one at a time in the order it comes near them, each
+// marched through its own distance along its own stretch (marchedTransmittance, with that
+// stretch as its culling), until one blocks the light. A segment that starts inside the
+// solid the path travels in (insideSign < 0) heads for that solid's boundary from within.
+vec3 marchedObjectsTransmittance(Surface s, vec3 wi, float cosLeaving, float distance,
+                                 float insideSign, uint mask, float tolerance, int target,
+                                 ShadowStart start, vec3 transmittance)
+{
+    float afterT = -FLOAT_MAX;
+    int afterObject = -1;
+    while (loopIterationAllowed()) {
+        vec2 stretch;
+        int object = nextMarchedObject(start.origin, wi, tolerance, 0.0, mask, 0.0,
+                                       distance - start.along, afterT, afterObject, stretch);
+        if (object < 0)
+            return transmittance;
+        afterT = stretch.x;
+        afterObject = object;
+        gMarchedObject = object;
+        float objectSign =
+            insideSign < 0.0 && objectDistance(object, start.origin) < 0.0 ? -1.0 : 1.0;
+        transmittance = marchedTransmittance(s, wi, cosLeaving, distance, objectSign,
+                                             RayCulling(0xffffffffu, stretch.y, stretch.x),
+                                             start.along, tolerance, target, start, transmittance);
+        if (transmittance == vec3(0.0))
+            return transmittance;
+    }
+    return vec3(0.0);  // the loop budget is spent
 }
 #endif
 
@@ -436,6 +526,9 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
 #endif
 #if !HAS_MARCHED_OBJECTS
     return transmittance;
+#elif defined(MARCHES_OBJECT_BY_OBJECT)
+    return marchedObjectsTransmittance(s, wi, cosLeaving, distance, insideSign, culling.mask,
+                                       tolerance, target, start, transmittance);
 #else
     return marchedTransmittance(s, wi, cosLeaving, distance, insideSign, culling, culledFrom,
                                 tolerance, target, start, transmittance);
@@ -448,7 +541,9 @@ vec3 shadowTransmittance(Surface s, vec3 wi, float distance, float insideSign, f
 // starts its camera ray there instead of at the eye.
 float cameraMarchStart(ivec2 pixel)
 {
-#if !HAS_MARCHED_OBJECTS
+#if !HAS_MARCHED_OBJECTS || defined(MARCHES_OBJECT_BY_OBJECT)
+    // (Marched object by object, each ray's march begins where it comes near an object's
+    // bound: a cone march of the whole scene would walk the hierarchy at every step.)
     return 0.0;
 #endif
     vec3 axis = cameraRayDirection(vec2(pixel) + 0.5);

@@ -234,11 +234,25 @@ vec3 sceneGradient(vec3 p, float step, out float bend)
     COUNT_WORK(workEvaluations, 6);
     const uint every = 0xffffffffu;
     vec2 h = vec2(step, 0.0);
+#ifdef MARCHES_OBJECT_BY_OBJECT
+    // The general shader's distance is its interpreter, inlined wherever it is called: one
+    // call in a loop over the six taps keeps one copy (the same taps, the same sums).
+    vec3 forward = vec3(0.0);
+    vec3 backward = vec3(0.0);
+    for (int tap = 0; tap < 6 && loopIterationAllowed(); ++tap) {
+        vec3 axis = vec3(equal(ivec3(tap % 3), ivec3(0, 1, 2)));
+        float side = tap < 3 ? 1.0 : -1.0;
+        float d = sceneDistanceCulled(p + side * step * axis, every);
+        forward += tap < 3 ? d * axis : vec3(0.0);
+        backward += tap < 3 ? vec3(0.0) : d * axis;
+    }
+#else
     vec3 forward = vec3(sceneDistanceCulled(p + h.xyy, every), sceneDistanceCulled(p + h.yxy, every),
                         sceneDistanceCulled(p + h.yyx, every));
     vec3 backward = vec3(sceneDistanceCulled(p - h.xyy, every),
                          sceneDistanceCulled(p - h.yxy, every),
                          sceneDistanceCulled(p - h.yyx, every));
+#endif
     vec3 sums = abs(forward + backward);
     bend = (sums.x + sums.y + sums.z) / step;
     return (forward - backward) / (2.0 * step);

@@ -147,6 +147,14 @@ SceneShaderCode generateSceneShaderCode(const Scene& scene, const ShaderBuild& b
                 build.marchBoxesCylindersAndDisks);
             code.objectMarched.push_back(marched);
             code.marchesAnything = code.marchesAnything || (marched && !neverMarched[i]);
+            // A marched object is marched only where rays come near its bounding sphere
+            // (shape_interpreter.glsl, marchedObjectStretch): every one with a finite bound
+            // gets one, not only the expensive shapes the distance walk skips by it.
+            if (marched && code.objectBounds[i].w < 0.0f) {
+                const ShapeBound bound = boundShape(scene.objects[i].shape);
+                if (bound.finite)
+                    code.objectBounds[i] = glm::vec4(bound.center, bound.radius);
+            }
         }
     }
     if (build.exactGeometry) {

@@ -77,10 +77,12 @@ struct SceneShaderCode {
     std::vector<glm::vec4> shapeParameters;
     std::vector<glm::ivec4> shapeProgram;  // General only
     std::vector<int> objectProgramStart;   // General only: per object
-    std::vector<glm::vec4> objectBounds;   // General only: per object, radius < 0 for none
+    // General only: per object, radius < 0 for none (every marched object with a finite
+    // bound has one: rays march it only where they come near it, shape_interpreter.glsl).
+    std::vector<glm::vec4> objectBounds;
     // General only: per object, whether rays march it (the interpreter meets the others
-    // exactly: isExactObject, shape_interpreter.glsl); the hierarchy's culled walk skips
-    // nodes that hold no marched object.
+    // exactly: isExactObject, shape_interpreter.glsl); the walk that finds a ray's marched
+    // objects (nextMarchedObject) skips nodes that hold none.
     std::vector<bool> objectMarched;
     // Per object: the culling-mask bit that leaves the whole object out of a culled distance
     // (ray_culling.glsl), or 0 where none does.
