@@ -27,32 +27,6 @@ RayCulling noRayCulling()
     return RayCulling(0xffffffffu, FLOAT_MAX, 0.0);
 }
 
-// A piece inside a ball (centre, radius). The ball is widened by the largest tolerance the
-// ray can have while it is inside the widened ball, m = tolerance0 + growth (t_far + r + m)
-// solved for m, and a little more for rounding.
-void cullByBall(inout RayCulling culling, uint bit, vec4 ball, vec3 origin, vec3 direction,
-                float tolerance0, float toleranceGrowth)
-{
-    vec3 toCenter = ball.xyz - origin;
-    float along = dot(toCenter, direction);
-    float margin = 1.25 * (tolerance0 + toleranceGrowth * (max(along, 0.0) + ball.w)) /
-                   (1.0 - toleranceGrowth);
-    float reach = ball.w + margin;
-    // The perpendicular part directly, not |toCenter|^2 - along^2: a tiny ball far away
-    // would lose all its digits to cancellation.
-    vec3 offAxis = toCenter - along * direction;
-    float halfChordSquared = reach * reach - dot(offAxis, offAxis);
-    if (halfChordSquared < 0.0)
-        return;
-    float halfChord = sqrt(halfChordSquared);
-    float exit = along + halfChord;
-    if (exit < 0.0)
-        return;
-    culling.mask |= bit;
-    culling.escapeDistance = max(culling.escapeDistance, exit);
-    culling.entryDistance = min(culling.entryDistance, max(along - halfChord, 0.0));
-}
-
 // A piece inside a ball and behind planes (N, W) (inside where dot(N, p) + W <= 0: a user
 // SDF's `@hull`), written by the scene's code as
 //   BallChord chord = ballChord(ball, ...); clipChord(chord, plane, ...) for each plane;
@@ -68,6 +42,9 @@ struct BallChord {
     float margin;  // the largest tolerance the ray has within the chord
 };
 
+// The ball's chord along the ray. The ball is widened by the largest tolerance the ray can
+// have while it is inside the widened ball, m = tolerance0 + growth (t_far + r + m) solved for
+// m, and a little more for rounding.
 BallChord ballChord(vec4 ball, vec3 origin, vec3 direction, float tolerance0,
                     float toleranceGrowth)
 {
@@ -76,6 +53,8 @@ BallChord ballChord(vec4 ball, vec3 origin, vec3 direction, float tolerance0,
     float margin = 1.25 * (tolerance0 + toleranceGrowth * (max(along, 0.0) + ball.w)) /
                    (1.0 - toleranceGrowth);
     float reach = ball.w + margin;
+    // The perpendicular part directly, not |toCenter|^2 - along^2: a tiny ball far away
+    // would lose all its digits to cancellation.
     vec3 offAxis = toCenter - along * direction;
     float halfChordSquared = reach * reach - dot(offAxis, offAxis);
     if (halfChordSquared < 0.0)
@@ -104,4 +83,12 @@ void approachChord(inout RayCulling culling, uint bit, BallChord chord)
     culling.mask |= bit;
     culling.escapeDistance = max(culling.escapeDistance, chord.exit);
     culling.entryDistance = min(culling.entryDistance, chord.entry);
+}
+
+// A piece inside a ball (centre, radius) alone: its chord, unclipped.
+void cullByBall(inout RayCulling culling, uint bit, vec4 ball, vec3 origin, vec3 direction,
+                float tolerance0, float toleranceGrowth)
+{
+    approachChord(culling, bit,
+                  ballChord(ball, origin, direction, tolerance0, toleranceGrowth));
 }
