@@ -9,11 +9,6 @@ namespace render {
 
 namespace {
 
-constexpr int kAlbedoDepthUnit = texture_units::kAlbedoDepth;
-constexpr int kNormalCoverageUnit = texture_units::kNormalCoverage;
-constexpr int kSourceUnit = texture_units::kDenoiserSource;
-constexpr int kMomentsUnit = texture_units::kDenoiserMoments;
-
 // Tuned by eye on the classic scenes at 1 to 64 samples per pixel (docs/DENOISING.md).
 constexpr float kColorSigma = 4.0f;
 constexpr float kNormalSigma = 0.1f;
@@ -48,19 +43,19 @@ const gl::Texture& PreviewDenoiser::filter(const AccumulationTargets::Set& accum
 {
     resize(width, height);
     program_.use();
-    accumulation.albedoDepth->bind(kAlbedoDepthUnit);
-    accumulation.normalCoverage->bind(kNormalCoverageUnit);
-    accumulation.moments.bind(kMomentsUnit);
+    accumulation.albedoDepth->bind(texture_units::kAlbedoDepth);
+    accumulation.normalCoverage->bind(texture_units::kNormalCoverage);
+    accumulation.moments.bind(texture_units::kDenoiserMoments);
     const auto set = [&](const char* name, int value) {
         glUniform1i(program_.uniformLocation(name), value);
     };
     const auto setFloat = [&](const char* name, float value) {
         glUniform1f(program_.uniformLocation(name), value);
     };
-    set("uAlbedoDepth", kAlbedoDepthUnit);
-    set("uNormalCoverage", kNormalCoverageUnit);
-    set("uMoments", kMomentsUnit);
-    set("uSource", kSourceUnit);
+    set("uAlbedoDepth", texture_units::kAlbedoDepth);
+    set("uNormalCoverage", texture_units::kNormalCoverage);
+    set("uMoments", texture_units::kDenoiserMoments);
+    set("uSource", texture_units::kDenoiserSource);
     setFloat("uColorSigma", kColorSigma);
     setFloat("uNormalSigma", kNormalSigma);
     setFloat("uDepthSigma", kDepthSigma);
@@ -71,7 +66,7 @@ const gl::Texture& PreviewDenoiser::filter(const AccumulationTargets::Set& accum
     for (int pass = 0; pass < kPasses; ++pass) {
         const Target& destination = *targets_[pass % 2];
         destination.framebuffer.bindForDrawing();
-        source->bind(kSourceUnit);
+        source->bind(texture_units::kDenoiserSource);
         set("uStep", 1 << pass);
         set("uFirstPass", pass == 0);
         set("uLastPass", pass == kPasses - 1);

@@ -13,13 +13,6 @@ namespace render {
 
 namespace {
 
-constexpr int kEstimateUnit = texture_units::kPreviousEstimate;
-constexpr int kMomentsUnit = texture_units::kPreviousMoments;
-constexpr int kPigmentTexturesUnit = texture_units::kPigmentTextures;
-constexpr int kTileSampleTargetsUnit = texture_units::kTileSampleTargets;
-constexpr int kAlbedoDepthUnit = texture_units::kAlbedoDepth;
-constexpr int kNormalCoverageUnit = texture_units::kNormalCoverage;
-
 double secondsSince(std::chrono::steady_clock::time_point start)
 {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -104,7 +97,7 @@ void ProgressiveRenderer::generateDriverCode()
     program_->program().use();
     setDrawUniforms(0, 0, 0);
     bindPrevious(targets_.previous());
-    pigmentTextures_.texture.bind(kPigmentTexturesUnit);
+    pigmentTextures_.texture.bind(texture_units::kPigmentTextures);
     bindEnvironmentTextures();
     if (sceneData_)
         sceneData_->bind();
@@ -118,11 +111,11 @@ void ProgressiveRenderer::generateDriverCode()
 
 void ProgressiveRenderer::bindPrevious(const AccumulationTargets::Set& source) const
 {
-    source.estimate.bind(kEstimateUnit);
-    source.moments.bind(kMomentsUnit);
+    source.estimate.bind(texture_units::kPreviousEstimate);
+    source.moments.bind(texture_units::kPreviousMoments);
     if (source.albedoDepth) {
-        source.albedoDepth->bind(kAlbedoDepthUnit);
-        source.normalCoverage->bind(kNormalCoverageUnit);
+        source.albedoDepth->bind(texture_units::kAlbedoDepth);
+        source.normalCoverage->bind(texture_units::kNormalCoverage);
     }
 }
 
@@ -146,13 +139,13 @@ void ProgressiveRenderer::uploadAll()
         sceneData_.emplace(uniforms_, code_);
         SceneDataBuffers::setSamplers(uniforms);
     }
-    uniforms.set("uPreviousEstimate", kEstimateUnit);
-    uniforms.set("uPreviousMoments", kMomentsUnit);
-    uniforms.set("uPigmentTextures", kPigmentTexturesUnit);
-    uniforms.set("uTileSampleTargets", kTileSampleTargetsUnit);
+    uniforms.set("uPreviousEstimate", texture_units::kPreviousEstimate);
+    uniforms.set("uPreviousMoments", texture_units::kPreviousMoments);
+    uniforms.set("uPigmentTextures", texture_units::kPigmentTextures);
+    uniforms.set("uTileSampleTargets", texture_units::kTileSampleTargets);
     if (uniforms.declares("uPreviousAlbedoDepth")) {
-        uniforms.set("uPreviousAlbedoDepth", kAlbedoDepthUnit);
-        uniforms.set("uPreviousNormalCoverage", kNormalCoverageUnit);
+        uniforms.set("uPreviousAlbedoDepth", texture_units::kAlbedoDepth);
+        uniforms.set("uPreviousNormalCoverage", texture_units::kNormalCoverage);
     }
     // Their units whether or not the scene has a map: a shader without one reads neither.
     uniforms.set("uEnvironmentMap", EnvironmentMapTextures::kRadianceUnit);
@@ -321,7 +314,7 @@ void ProgressiveRenderer::renderPreview(int divisor, int maxBounces)
     uniforms.set("uMaxBounces", std::min(maxBounces, settings_.maxBounces));
     setDrawUniforms(1, 0, 0);
     bindPrevious(targets_.previous());
-    pigmentTextures_.texture.bind(kPigmentTexturesUnit);
+    pigmentTextures_.texture.bind(texture_units::kPigmentTextures);
     bindEnvironmentTextures();
     if (sceneData_)
         sceneData_->bind();
@@ -391,11 +384,11 @@ bool ProgressiveRenderer::drawFrame(const std::function<bool()>& keepGoing, int 
     program_->program().use();
     setDrawUniforms(2 * samples, target, tileSize_);
     bindPrevious(source);
-    pigmentTextures_.texture.bind(kPigmentTexturesUnit);
+    pigmentTextures_.texture.bind(texture_units::kPigmentTextures);
     bindEnvironmentTextures();
     if (sceneData_)
         sceneData_->bind();
-    tileSampleTargets_.bind(kTileSampleTargetsUnit);
+    tileSampleTargets_.bind(texture_units::kTileSampleTargets);
     const PixelRegion traced = tracedRegion();
     const int top = traced.y + traced.height;
     for (int row = traced.y; row < top;) {
