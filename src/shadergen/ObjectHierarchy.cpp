@@ -212,25 +212,41 @@ bool rayMeetsBox(const Box& box, const glm::vec3& origin, const glm::vec3& direc
     return enter <= leave;
 }
 
-float traverseRay(const ObjectHierarchy& hierarchy, const glm::vec3& origin,
-                  const glm::vec3& direction, float tMin, float tMax,
-                  const std::function<float(int object, float tMax)>& visit)
+// The walk both queries share, as the shader's: the unbounded objects first, then the nodes
+// in their depth-first order, a node that `opens` fails skipped with its subtree by its skip
+// link. `value` is the query's running answer (the ray's far end, the nearest distance),
+// passed through `visit`.
+template <typename Opens>
+float walkHierarchy(const ObjectHierarchy& hierarchy, float value, Opens opens,
+                    const std::function<float(int object, float value)>& visit)
 {
     for (int object : hierarchy.unbounded)
-        tMax = visit(object, tMax);
-    const glm::vec3 inverse = safeInverse(direction);
+        value = visit(object, value);
     int node = hierarchy.nodes.empty() ? -1 : 0;
     while (node >= 0) {
         const HierarchyNode& n = hierarchy.nodes[node];
-        if (!rayMeetsBox(n.bounds, origin, direction, inverse, tMin, tMax)) {
+        if (!opens(n, value)) {
             node = n.skip;
             continue;
         }
         for (int i = n.first; i < n.first + n.count; ++i)
-            tMax = visit(hierarchy.leafObjects[i], tMax);
+            value = visit(hierarchy.leafObjects[i], value);
         node = n.count > 0 ? n.skip : node + 1;
     }
-    return tMax;
+    return value;
+}
+
+float traverseRay(const ObjectHierarchy& hierarchy, const glm::vec3& origin,
+                  const glm::vec3& direction, float tMin, float tMax,
+                  const std::function<float(int object, float tMax)>& visit)
+{
+    const glm::vec3 inverse = safeInverse(direction);
+    return walkHierarchy(
+        hierarchy, tMax,
+        [&](const HierarchyNode& n, float far) {
+            return rayMeetsBox(n.bounds, origin, direction, inverse, tMin, far);
+        },
+        visit);
 }
 
 float squaredDistanceToBox(const Box& box, const glm::vec3& point)
@@ -242,24 +258,16 @@ float squaredDistanceToBox(const Box& box, const glm::vec3& point)
 float traversePoint(const ObjectHierarchy& hierarchy, const glm::vec3& point, bool marchedOnly,
                     const std::function<float(int object, float nearest)>& visit)
 {
-    float nearest = FLT_MAX;
-    for (int object : hierarchy.unbounded)
-        nearest = visit(object, nearest);
-    int node = hierarchy.nodes.empty() ? -1 : 0;
-    while (node >= 0) {
-        const HierarchyNode& n = hierarchy.nodes[node];
-        // A point inside a box always looks in: a negative nearest (inside some solid) must
-        // still find the solid it is deepest in, as the loop over every object does.
-        const float boxDistance = std::sqrt(squaredDistanceToBox(n.bounds, point));
-        if ((marchedOnly && !n.holdsMarched) || !(boxDistance < nearest || boxDistance <= 0.0f)) {
-            node = n.skip;
-            continue;
-        }
-        for (int i = n.first; i < n.first + n.count; ++i)
-            nearest = visit(hierarchy.leafObjects[i], nearest);
-        node = n.count > 0 ? n.skip : node + 1;
-    }
-    return nearest;
+    return walkHierarchy(
+        hierarchy, FLT_MAX,
+        [&](const HierarchyNode& n, float nearest) {
+            // A point inside a box always looks in: a negative nearest (inside some solid)
+            // must still find the solid it is deepest in, as the loop over every object does.
+            const float boxDistance = std::sqrt(squaredDistanceToBox(n.bounds, point));
+            return !(marchedOnly && !n.holdsMarched) &&
+                   (boxDistance < nearest || boxDistance <= 0.0f);
+        },
+        visit);
 }
 
 }  // namespace shadergen
