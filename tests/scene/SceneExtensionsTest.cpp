@@ -424,6 +424,23 @@ protected:
         return std::get<UserSdf>(scene.objects.at(0).shape.geometry);
     }
 
+    // Each declaration, as the second line of a blob's file, is refused with an error naming
+    // that file and line.
+    void expectEachRefusedOnLineTwo(std::initializer_list<const char*> declarations) const
+    {
+        for (const char* declaration : declarations) {
+            write("blob.glsl", std::string("// A blob.\n") + declaration +
+                                   "float blob(vec3 p, vec3 x) { return length(p - x) - 1.0; }\n");
+            try {
+                parseUserSdf("blob");
+                ADD_FAILURE() << declaration << " was accepted";
+            } catch (const SceneError& error) {
+                EXPECT_EQ(error.file(), (folder_ / "blob.glsl").string()) << declaration;
+                EXPECT_EQ(error.line(), 2) << declaration;
+            }
+        }
+    }
+
     std::filesystem::path folder_;
 };
 
@@ -495,18 +512,8 @@ TEST_F(UserSdfFiles, DeclareHullPlanesThatTheSurfaceLiesBehind)
 
 TEST_F(UserSdfFiles, AHullPlaneThatIsNotFourNumbersIsAnErrorNamingTheShaderFileAndLine)
 {
-    for (const char* declaration : {"// @hull 0 0 1\n", "// @hull 0 0 1 2 3\n",
-                                    "// @hull 0 0 0 1\n", "// @hull 0 0 one 1\n", "// @hull\n"}) {
-        write("blob.glsl", std::string("// A blob.\n") + declaration +
-                               "float blob(vec3 p, vec3 x) { return length(p - x) - 1.0; }\n");
-        try {
-            parseUserSdf("blob");
-            ADD_FAILURE() << declaration << " was accepted";
-        } catch (const SceneError& error) {
-            EXPECT_EQ(error.file(), (folder_ / "blob.glsl").string()) << declaration;
-            EXPECT_EQ(error.line(), 2) << declaration;
-        }
-    }
+    expectEachRefusedOnLineTwo({"// @hull 0 0 1\n", "// @hull 0 0 1 2 3\n", "// @hull 0 0 0 1\n",
+                                "// @hull 0 0 one 1\n", "// @hull\n"});
 }
 
 TEST_F(UserSdfFiles, DeclareTheFunctionThatIntersectsTheShape)
@@ -518,18 +525,8 @@ TEST_F(UserSdfFiles, DeclareTheFunctionThatIntersectsTheShape)
 
 TEST_F(UserSdfFiles, AnIntersectionThatIsNoGlslNameIsAnErrorNamingTheShaderFileAndLine)
 {
-    for (const char* declaration : {"// @intersect 2blob\n", "// @intersect\n",
-                                    "// @intersect blob extra\n", "// @intersect gl_blob\n"}) {
-        write("blob.glsl", std::string("// A blob.\n") + declaration +
-                               "float blob(vec3 p, vec3 x) { return length(p - x) - 1.0; }\n");
-        try {
-            parseUserSdf("blob");
-            ADD_FAILURE() << declaration << " was accepted";
-        } catch (const SceneError& error) {
-            EXPECT_EQ(error.file(), (folder_ / "blob.glsl").string()) << declaration;
-            EXPECT_EQ(error.line(), 2) << declaration;
-        }
-    }
+    expectEachRefusedOnLineTwo({"// @intersect 2blob\n", "// @intersect\n",
+                                "// @intersect blob extra\n", "// @intersect gl_blob\n"});
 }
 
 TEST(UserSdfDeclarations, TheProjectKnotReturnsItsOwnSafeBound)
