@@ -270,22 +270,14 @@ bool torusQuadraticRoots(float b, float c, out float near, out float far)
     return true;
 }
 
-// A root y0 of the quartic, polished, taken as the crossing where it is the nearest so far
-// beyond tMin and truly on the torus (its exact distance there near 0).
-void torusConsiderRoot(float y0, float P, float Q, float S, float scale, float along, vec3 o,
-                       vec3 direction, float majorRadius, float minorRadius, float tMin,
-                       inout float best, inout bool found)
+// Whether the ray's point at t is truly on the torus (its exact distance there near 0): a
+// root of the quartic that float32 left far off (near a tangency) is none.
+bool torusCrossingIsReal(float t, vec3 o, vec3 direction, float majorRadius, float minorRadius,
+                         float scale)
 {
-    float y = torusQuarticNewton(y0, P, Q, S);
-    float t = scale * y - along;
-    if (!(t > tMin && t < best))
-        return;
     vec3 p = o + t * direction;
     vec2 radial = vec2(length(p.xz) - majorRadius, p.y);
-    if (abs(length(radial) - minorRadius) > 1e-3 * scale)
-        return;
-    best = t;
-    found = true;
+    return abs(length(radial) - minorRadius) <= 1e-3 * scale;
 }
 
 bool exactTorus(vec3 origin, vec3 direction, vec3 center, float majorRadius,
@@ -316,10 +308,12 @@ bool exactTorus(vec3 origin, vec3 direction, vec3 center, float majorRadius,
     float discriminant = halfB * halfB + a * a * a / 27.0;
     float V;
     if (discriminant >= 0.0) {
+        // V = w + w', with w and w' the cube roots of -b/2 +- sqrt(discriminant), whose
+        // product is -a/3: one cube root, of the term that does not cancel, gives both.
         float root = sqrt(discriminant);
-        float first = -halfB + root;
-        float second = -halfB - root;
-        V = sign(first) * pow(abs(first), 1.0 / 3.0) + sign(second) * pow(abs(second), 1.0 / 3.0);
+        float term = halfB > 0.0 ? -halfB - root : -halfB + root;
+        float w = sign(term) * pow(abs(term), 1.0 / 3.0);
+        V = w != 0.0 ? w - a / (3.0 * w) : 0.0;
     } else {
         float radius = sqrt(-a / 3.0);
         float angle = acos(clamp(-halfB / (radius * radius * radius), -1.0, 1.0));
@@ -335,41 +329,54 @@ bool exactTorus(vec3 origin, vec3 direction, vec3 center, float majorRadius,
     }
     U = max(U, 0.0);
 
-    float best = hit.t;
-    bool found = false;
+    // The quartic's real roots are those of two quadratics y^2 + b y + c: its factors, or, where
+    // Q is near 0 (y^4 + P y^2 + S, a quadratic in y^2), y^2 = each root of that quadratic.
+    // Both cases feed one loop over the four candidates: on SIMD hardware that runs both sides
+    // of a branch (llvmpipe among it), two loops of candidates would cost twice the one.
     float u = sqrt(U);
+    vec2 linear;    // b of the two quadratics
+    vec2 constant;  // c of the two quadratics
     if (u > 1e-4) {
         float z = 0.5 * (U + P);
         float split = Q / (2.0 * u);
-        float near;
-        float far;
-        if (torusQuadraticRoots(-u, z + split, near, far)) {
-            torusConsiderRoot(near, P, Q, S, scale, along, o, direction, majorRadius,
-                              minorRadius, tMin, best, found);
-            torusConsiderRoot(far, P, Q, S, scale, along, o, direction, majorRadius,
-                              minorRadius, tMin, best, found);
-        }
-        if (torusQuadraticRoots(u, z - split, near, far)) {
-            torusConsiderRoot(near, P, Q, S, scale, along, o, direction, majorRadius,
-                              minorRadius, tMin, best, found);
-            torusConsiderRoot(far, P, Q, S, scale, along, o, direction, majorRadius,
-                              minorRadius, tMin, best, found);
-        }
+        linear = vec2(-u, u);
+        constant = vec2(z + split, z - split);
     } else {
-        // Q is near 0: y^4 + P y^2 + S = 0, a quadratic in y^2.
         float low;
         float high;
-        if (torusQuadraticRoots(P, S, low, high)) {
-            for (int side = 0; side < 2; ++side) {
-                float squared = side == 0 ? high : low;
-                if (squared >= 0.0) {
-                    torusConsiderRoot(-sqrt(squared), P, Q, S, scale, along, o, direction,
-                                      majorRadius, minorRadius, tMin, best, found);
-                    torusConsiderRoot(sqrt(squared), P, Q, S, scale, along, o, direction,
-                                      majorRadius, minorRadius, tMin, best, found);
-                }
-            }
+        bool real = torusQuadraticRoots(P, S, low, high);
+        linear = vec2(0.0);
+        constant = real ? vec2(-high, -low) : vec2(1.0);  // y^2 + 1: no real root
+    }
+    vec4 candidates = vec4(FLOAT_MAX);  // the quartic's real roots, unpolished
+    float near;
+    float far;
+    if (torusQuadraticRoots(linear.x, constant.x, near, far))
+        candidates.xy = vec2(near, far);
+    if (torusQuadraticRoots(linear.y, constant.y, near, far))
+        candidates.zw = vec2(near, far);
+    // Only the nearest root beyond tMin is polished (Newton's method on the quartic) and
+    // checked, and the next one only where that one fails: on SIMD hardware a check written
+    // out for each of the four roots costs all four every time, while a loop goes round
+    // again only when some ray of the group needs it. Roots more than 1e-3 (in units of
+    // R + r) short of tMin are passed over unpolished: polishing moves a root far less.
+    float best = hit.t;
+    bool found = false;
+    float passed = (tMin + along) / scale - 1e-3;
+    for (int attempt = 0; attempt < 4; ++attempt) {
+        vec4 ahead = mix(vec4(FLOAT_MAX), candidates, greaterThan(candidates, vec4(passed)));
+        float y0 = min(min(ahead.x, ahead.y), min(ahead.z, ahead.w));
+        if (y0 == FLOAT_MAX)
+            break;
+        float t = scale * torusQuarticNewton(y0, P, Q, S) - along;
+        if (!(t < best))
+            break;  // the roots further on are no nearer
+        if (t > tMin && torusCrossingIsReal(t, o, direction, majorRadius, minorRadius, scale)) {
+            best = t;
+            found = true;
+            break;
         }
+        passed = y0;
     }
     if (!found)
         return false;

@@ -14,6 +14,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
 #include <sstream>
 
 namespace render_tests {
@@ -200,6 +203,80 @@ TEST(ExactShapes, AFarTorusSeenNearlyEdgeOnIsMetWithinItsSilhouette)
     const TorusSolid torus{{0, 0, 0}, 1.5, 0.45, glm::transpose(turn)};
     expectSilhouette(scene, torus, false);
     expectSilhouette(scene, torus, true);
+}
+
+// Where the ray first crosses the surface of the solid with exact distance `solid.distance`
+// (leaving it, from inside), sphere traced on |distance| in double precision up to 2000 units.
+template <typename Solid>
+std::optional<double> firstCrossing(const Solid& solid, const glm::dvec3& origin,
+                                    const glm::dvec3& direction)
+{
+    double t = 0.0;
+    for (int step = 0; step < 100000 && t < 2000.0; ++step) {
+        const double d = std::abs(solid.distance(origin + t * direction));
+        if (d < 1e-7)
+            return t;
+        t += d;
+    }
+    return std::nullopt;
+}
+
+// Every pixel whose rays all cross the torus, and whose depth is smooth across it (no
+// pixel straddling the near side and the far one), has the camera depth (--feature-buffers)
+// of the first crossing: the nearest of the quartic's roots beyond the eye, in the default
+// render and the --exact-geometry reference. Returns the pixels judged.
+int expectTorusDepth(const std::string& camera, const TorusSolid& torus, bool exactGeometry)
+{
+    const scene::Scene scene = sceneFromText(blackSolidScene(camera, "torus 0 0 0  1.5 0.45"));
+    settings::RenderSettings settings = settingsWithSeed(4);
+    settings.exactGeometry = exactGeometry;
+    settings.featureBuffers = true;
+    const RenderedImage image = renderScene(scene, kWidth, kHeight, kSamples, settings);
+    const PinholeCamera view(scene.camera, kWidth, kHeight);
+    const glm::dvec3 eye = view.eye();
+    auto crossing = [&](const glm::dvec3& d) { return firstCrossing(torus, eye, d); };
+    int judged = 0;
+    double worst = 0.0;
+    for (int y = 0; y < kHeight; ++y)
+        for (int x = 0; x < kWidth; ++x) {
+            if (!view.wholePixel(x, y, [&](glm::dvec3 d) { return crossing(d).has_value(); }))
+                continue;
+            const double low = std::min({*crossing(view.direction(x, y)),
+                                         *crossing(view.direction(x + 1, y)),
+                                         *crossing(view.direction(x, y + 1)),
+                                         *crossing(view.direction(x + 1, y + 1))});
+            const double high = std::max({*crossing(view.direction(x, y)),
+                                          *crossing(view.direction(x + 1, y)),
+                                          *crossing(view.direction(x, y + 1)),
+                                          *crossing(view.direction(x + 1, y + 1))});
+            if (high > 1.05 * low)
+                continue;  // a depth edge, or a surface seen so obliquely that jitter shows
+            const double expected =
+                view.pixelAverage(x, y, 8, [&](const glm::dvec3& d) { return *crossing(d); });
+            const double depth = image.accumulation.albedoDepth.at(x, y, 3);
+            worst = std::max(worst, std::abs(depth - expected) / expected);
+            EXPECT_NEAR(depth, expected, 0.01 * expected) << "pixel (" << x << ", " << y << ")";
+            ++judged;
+        }
+    std::printf("%s: %d pixels judged, worst relative depth error %.3g\n",
+                exactGeometry ? "exact geometry" : "default", judged, worst);
+    return judged;
+}
+
+TEST(ExactShapes, ATorusIsMetAtItsNearestCrossingThroughItsHoleAndFromInsideItsTube)
+{
+    const TorusSolid torus{{0, 0, 0}, 1.5, 0.45};
+    for (bool exactGeometry : {false, true}) {
+        // Low and across: rays cross the near side of the ring, or pass the hole and cross
+        // the far side.
+        EXPECT_GT(expectTorusDepth("0 0.7 5\n0 0 0\n0 1 0\n40\n", torus, exactGeometry), 600);
+        // Straight down the axis (the quartic's odd term vanishes along it): the inner rim
+        // and, through the hole, nothing.
+        EXPECT_GT(expectTorusDepth("0 6 0\n0 0 0\n0 0 -1\n40\n", torus, exactGeometry), 400);
+        // From inside the tube, along it: every ray leaves the solid through its wall.
+        EXPECT_GT(expectTorusDepth("1.5 0 0\n1.5 0.1 -1\n0 1 0\n70\n", torus, exactGeometry),
+                  kWidth * kHeight / 2);
+    }
 }
 
 const char* const kCsgCamera = "3 2.2 4\n0 0 0\n0 1 0\n40\n";
