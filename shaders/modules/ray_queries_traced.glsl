@@ -400,8 +400,9 @@ vec3 marchedTransmittance(Surface s, vec3 wi, float cosLeaving, float distance,
     float acceptedT = t;
     float acceptedRadius = 0.0;
     for (int stop = 0; stop < kMaxShadowStops && loopIterationAllowed(); ++stop) {
+        int nearest;
         float radius = shadowMarch(start.origin, wi, insideSign, culling.mask, clearDistance,
-                                   stopTolerance, t, acceptedT, acceptedRadius, stepsLeft);
+                                   stopTolerance, t, acceptedT, acceptedRadius, stepsLeft, nearest);
         if (t >= clearDistance)
             return transmittance;
         if (!(radius < stopTolerance))
@@ -416,8 +417,6 @@ vec3 marchedTransmittance(Surface s, vec3 wi, float cosLeaving, float distance,
         --stepsLeft;
         vec3 p = start.origin + t * wi;
 #if HAS_NULL_INTERFACES || HAS_SPHERE_LIGHTS
-        int nearest;
-        sceneDistanceAndObjectCulled(p, culling.mask, nearest);
         if (nearest == target)
             return transmittance;
 #endif

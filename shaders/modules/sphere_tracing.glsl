@@ -171,16 +171,24 @@ MarchHit sphereTrace(vec3 origin, vec3 direction, float insideSign, RayCone cone
 // the last point passed clear of every surface, for the stop's secant slope. Plain steps,
 // not over-relaxed: shadow segments are short, and a relaxed step that fails costs one more
 // evaluation than it saves (measured worse, docs/PERFORMANCE.md).
+// `nearest` receives the object nearest the stop where the caller asks which one it is (a
+// light the segment reaches, an index-1 surface it passes): the step's own evaluation tells,
+// where one more evaluation at the stop would cost a whole scene distance per stop.
 float shadowMarch(vec3 origin, vec3 direction, float insideSign, uint mask, float clearDistance,
                   float stopTolerance, inout float t, inout float acceptedT,
-                  inout float acceptedRadius, inout int stepsLeft)
+                  inout float acceptedRadius, inout int stepsLeft, out int nearest)
 {
     float radius = FLOAT_MAX;
+    nearest = -1;
     for (; stepsLeft > 0 && loopIterationAllowed(); --stepsLeft) {
         COUNT_WORK(workShadowSteps, 1);
         if (t >= clearDistance)
             break;
+#if HAS_NULL_INTERFACES || HAS_SPHERE_LIGHTS
+        radius = insideSign * sceneDistanceAndObjectCulled(origin + t * direction, mask, nearest);
+#else
         radius = insideSign * sceneDistanceCulled(origin + t * direction, mask);
+#endif
         if (radius < stopTolerance)
             break;
         acceptedT = t;
