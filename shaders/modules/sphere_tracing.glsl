@@ -241,10 +241,11 @@ vec3 sceneGradient(vec3 p, float step, out float bend)
 {
     COUNT_WORK(workEvaluations, 6);
     const uint every = 0xffffffffu;
-    vec2 h = vec2(step, 0.0);
-#ifdef MARCHES_OBJECT_BY_OBJECT
-    // The general shader's distance is its interpreter, inlined wherever it is called: one
-    // call in a loop over the six taps keeps one copy (the same taps, the same sums).
+    // One call in a loop over the six taps (the same taps, the same sums), not six calls: the
+    // general shader's distance is its interpreter, inlined wherever it is called, and on
+    // SIMD hardware that runs both sides of a branch (llvmpipe among it) six calls would be
+    // paid by every group of rays, also where none of them met a marched surface, while the
+    // loop goes round once only there.
     vec3 forward = vec3(0.0);
     vec3 backward = vec3(0.0);
     for (int tap = 0; tap < 6 && loopIterationAllowed(); ++tap) {
@@ -254,13 +255,6 @@ vec3 sceneGradient(vec3 p, float step, out float bend)
         forward += tap < 3 ? d * axis : vec3(0.0);
         backward += tap < 3 ? vec3(0.0) : d * axis;
     }
-#else
-    vec3 forward = vec3(sceneDistanceCulled(p + h.xyy, every), sceneDistanceCulled(p + h.yxy, every),
-                        sceneDistanceCulled(p + h.yyx, every));
-    vec3 backward = vec3(sceneDistanceCulled(p - h.xyy, every),
-                         sceneDistanceCulled(p - h.yxy, every),
-                         sceneDistanceCulled(p - h.yyx, every));
-#endif
     vec3 sums = abs(forward + backward);
     bend = (sums.x + sums.y + sums.z) / step;
     return (forward - backward) / (2.0 * step);
