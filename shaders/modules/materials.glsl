@@ -65,52 +65,41 @@ float blinnPhongSpecularProbability(vec3 fresnel)
     return clamp(averageComponent(fresnel), 0.0, 1.0);
 }
 
-// f(wo, wi) and the density with which blinnPhongSample picks wi, together: they share the
-// Fresnel term, the half vector and the lobe's power, which written out in each (llvmpipe
-// runs every call, whichever is used) cost twice.
-vec3 blinnPhongEvaluateWithPdf(Surface s, vec3 wo, vec3 wi, out float pdf)
+vec3 blinnPhongEvaluate(Surface s, vec3 wo, vec3 wi)
 {
     vec3 n = s.facingNormal;
     float cosO = dot(n, wo);
     float cosI = dot(n, wi);
-    pdf = 0.0;
     if (cosO <= 0.0 || cosI <= 0.0)
         return vec3(0.0);
     vec3 fresnel = schlickFresnel(s.color, cosO);
-    float specular = blinnPhongSpecularProbability(fresnel);
     vec3 h = normalize(wi + wo);
     float hDotI = dot(h, wi);
     float lobe = 0.0;
-    float lobePdf = 0.0;
-    if (hDotI > 1e-7) {
-        float power = pow(clamp(dot(n, h), 0.0, 1.0), s.phongExponent);
-        lobe = (s.phongExponent + 1.0) / (8.0 * PI) * power / (hDotI * max(cosI, cosO));
-        // The half vector's density, (n + 1) / (2 pi) cos^n, turned into wi's.
-        lobePdf = (s.phongExponent + 1.0) * INV_TWO_PI * power / (4.0 * hDotI);
-    }
-    pdf = specular * lobePdf + (1.0 - specular) * cosineHemispherePdf(cosI);
+    if (hDotI > 1e-7)
+        lobe = (s.phongExponent + 1.0) / (8.0 * PI) *
+               pow(clamp(dot(n, h), 0.0, 1.0), s.phongExponent) / (hDotI * max(cosI, cosO));
     return fresnel * lobe + (1.0 - fresnel) * s.color * INV_PI;
-}
-
-vec3 blinnPhongEvaluate(Surface s, vec3 wo, vec3 wi)
-{
-    float pdf;
-    return blinnPhongEvaluateWithPdf(s, wo, wi, pdf);
 }
 
 float blinnPhongPdf(Surface s, vec3 wo, vec3 wi)
 {
-    float pdf;
-    blinnPhongEvaluateWithPdf(s, wo, wi, pdf);
-    return pdf;
+    vec3 n = s.facingNormal;
+    float cosO = dot(n, wo);
+    float cosI = dot(n, wi);
+    if (cosO <= 0.0 || cosI <= 0.0)
+        return 0.0;
+    float specular = blinnPhongSpecularProbability(schlickFresnel(s.color, cosO));
+    vec3 h = normalize(wi + wo);
+    float hDotI = dot(h, wi);
+    float lobePdf = hDotI > 1e-7
+                        ? blinnPhongHalfVectorPdf(dot(n, h), s.phongExponent) / (4.0 * hDotI)
+                        : 0.0;
+    return specular * lobePdf + (1.0 - specular) * cosineHemispherePdf(cosI);
 }
 
 // Chooses the glossy lobe with the Fresnel's probability, else the cosine-weighted diffuse
-// one; the weight uses the density of the mixture, so either choice is unbiased. Both lobes'
-// directions are (sin theta cos phi, sin theta sin phi, cos theta) about their axes (the
-// half vector's about n for the glossy one, wi's for the diffuse one) with phi = 2 pi u.y:
-// one sine and cosine of phi serve the lobe chosen (sampleBlinnPhongHalfVector and
-// sampleCosineHemisphere give the same numbers).
+// one; the weight uses the density of the mixture, so either choice is unbiased.
 BsdfSample blinnPhongSample(Surface s, vec3 wo, float uLobe, vec2 uDirection)
 {
     vec3 n = s.facingNormal;
@@ -119,29 +108,22 @@ BsdfSample blinnPhongSample(Surface s, vec3 wo, float uLobe, vec2 uDirection)
         return invalidSample();
     mat3 frame = basisAround(n);
     float specular = blinnPhongSpecularProbability(schlickFresnel(s.color, cosO));
-    bool glossy = uLobe < specular;
-    float cosTheta;
-    float sinTheta;
-    if (glossy) {
-        cosTheta = pow(uDirection.x, 1.0 / (s.phongExponent + 1.0));
-        sinTheta = sqrt(max(0.0, 1.0 - cosTheta * cosTheta));
+    vec3 wi;
+    if (uLobe < specular) {
+        vec3 h = frame * sampleBlinnPhongHalfVector(uDirection, s.phongExponent);
+        if (dot(h, wo) <= 0.0)
+            return invalidSample();
+        wi = reflect(-wo, h);
     } else {
-        sinTheta = sqrt(uDirection.x);
-        cosTheta = sqrt(max(0.0, 1.0 - uDirection.x));
+        wi = frame * sampleCosineHemisphere(uDirection);
     }
-    float phi = TWO_PI * uDirection.y;
-    vec3 axisOrDirection = frame * vec3(sinTheta * cos(phi), sinTheta * sin(phi), cosTheta);
-    if (glossy && dot(axisOrDirection, wo) <= 0.0)
-        return invalidSample();
-    vec3 wi = glossy ? reflect(-wo, axisOrDirection) : axisOrDirection;
     float cosI = dot(n, wi);
     if (cosI <= 0.0)
         return invalidSample();
-    float pdf;
-    vec3 f = blinnPhongEvaluateWithPdf(s, wo, wi, pdf);
+    float pdf = blinnPhongPdf(s, wo, wi);
     if (!(pdf > 0.0))
         return invalidSample();
-    return BsdfSample(true, wi, f * cosI / pdf, pdf, false, 1.0);
+    return BsdfSample(true, wi, blinnPhongEvaluate(s, wo, wi) * cosI / pdf, pdf, false, 1.0);
 }
 #endif
 
