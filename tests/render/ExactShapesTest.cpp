@@ -241,14 +241,11 @@ int expectTorusDepth(const std::string& camera, const TorusSolid& torus, bool ex
         for (int x = 0; x < kWidth; ++x) {
             if (!view.wholePixel(x, y, [&](glm::dvec3 d) { return crossing(d).has_value(); }))
                 continue;
-            const double low = std::min({*crossing(view.direction(x, y)),
-                                         *crossing(view.direction(x + 1, y)),
-                                         *crossing(view.direction(x, y + 1)),
-                                         *crossing(view.direction(x + 1, y + 1))});
-            const double high = std::max({*crossing(view.direction(x, y)),
-                                          *crossing(view.direction(x + 1, y)),
-                                          *crossing(view.direction(x, y + 1)),
-                                          *crossing(view.direction(x + 1, y + 1))});
+            const auto corners = {*crossing(view.direction(x, y)),
+                                  *crossing(view.direction(x + 1, y)),
+                                  *crossing(view.direction(x, y + 1)),
+                                  *crossing(view.direction(x + 1, y + 1))};
+            const auto [low, high] = std::minmax(corners);
             if (high > 1.05 * low)
                 continue;  // a depth edge, or a surface seen so obliquely that jitter shows
             const double expected =
