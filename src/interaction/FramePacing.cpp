@@ -19,7 +19,8 @@ SamplesPerFrame::SamplesPerFrame(int initial, bool given, double targetFrameSeco
 }
 
 void SamplesPerFrame::afterFrame(int framesDrawn, double lastSecondsPerSample,
-                                 std::optional<double> secondsLeft)
+                                 std::optional<double> secondsLeft,
+                                 std::optional<double> secondsToLimit)
 {
     if (given_ || framesDrawn <= 1)
         return;
@@ -27,6 +28,9 @@ void SamplesPerFrame::afterFrame(int framesDrawn, double lastSecondsPerSample,
     if (secondsLeft)
         frameSeconds = std::min(frameSeconds, std::max(kShortestAimedFrameSeconds,
                                                        kFrameShareOfTimeLeft * *secondsLeft));
+    if (secondsToLimit)
+        frameSeconds = std::min(frameSeconds, std::max(kShortestAimedFrameSeconds,
+                                                       kFrameShareOfTimeToLimit * *secondsToLimit));
     samples_ = samplesPerFrameFor(frameSeconds, lastSecondsPerSample, most_);
 }
 

@@ -22,7 +22,12 @@ int samplesPerFrameFor(double targetFrameSeconds, double secondsPerSample, int m
 // older estimate). Where the time left is predicted, frames take at most kFrameShareOfTimeLeft
 // of it, and no less than kShortestAimedFrameSeconds, whose samples dwarf a frame's fixed cost
 // (the read-back and the plan).
+//
+// A render with a time limit abandons the frame the limit interrupts (its bands are not
+// all drawn), so frames aim to end by the limit: at most kFrameShareOfTimeToLimit of the
+// time to it, and no less than kShortestAimedFrameSeconds.
 constexpr double kFrameShareOfTimeLeft = 0.1;
+constexpr double kFrameShareOfTimeToLimit = 0.9;
 constexpr double kShortestAimedFrameSeconds = 0.05;
 
 class SamplesPerFrame {
@@ -30,9 +35,11 @@ public:
     SamplesPerFrame(int initial, bool given, double targetFrameSeconds, int most = 16);
     int samples() const { return samples_; }
     // After a frame that added samples; `framesDrawn` counts it. `secondsLeft`: the predicted
-    // time to the render's target error, where it aims at one and a prediction is made.
+    // time to the render's target error, where it aims at one and a prediction is made;
+    // `secondsToLimit`: the time to the render's time limit, where it has one.
     void afterFrame(int framesDrawn, double lastSecondsPerSample,
-                    std::optional<double> secondsLeft = std::nullopt);
+                    std::optional<double> secondsLeft = std::nullopt,
+                    std::optional<double> secondsToLimit = std::nullopt);
 
 private:
     int samples_;

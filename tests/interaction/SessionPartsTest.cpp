@@ -172,6 +172,21 @@ TEST(FramePacing, FramesAimedAtAnErrorTakeATenthOfThePredictedTimeLeft)
     EXPECT_EQ(pacing.samples(), 500) << "never above the loop's own frame time";
 }
 
+// A render with a time limit abandons the frame the limit interrupts: a frame aims to end by
+// the limit, at 0.9 of the time to it, and takes no less than 0.05 s.
+TEST(FramePacing, FramesOfARenderWithATimeLimitAimToEndBeforeIt)
+{
+    interaction::SamplesPerFrame pacing(1, false, 2.0, 1024);
+    pacing.afterFrame(2, 0.001, std::nullopt, 60.0);
+    EXPECT_EQ(pacing.samples(), 1024) << "far from the limit: the loop's 2 s, within its most";
+    pacing.afterFrame(3, 0.01, std::nullopt, 1.0);
+    EXPECT_EQ(pacing.samples(), 90) << "0.9 of the 1 s left";
+    pacing.afterFrame(4, 0.01, std::nullopt, 0.01);
+    EXPECT_EQ(pacing.samples(), 5) << "never below 0.05 s";
+    pacing.afterFrame(5, 0.001, 2.0, 1.0);
+    EXPECT_EQ(pacing.samples(), 200) << "a predicted error's tenth, when that is shorter";
+}
+
 TEST(FramePacing, ThePreviewGridCoarsensWhenSlowAndRefinesWhenFast)
 {
     EXPECT_EQ(interaction::nextPreviewDivisor(2, 0.2), 3);
