@@ -22,7 +22,7 @@ void SamplesPerFrame::afterFrame(int framesDrawn, double lastSecondsPerSample,
                                  std::optional<double> secondsLeft,
                                  std::optional<double> secondsToLimit)
 {
-    if (given_ || framesDrawn <= 1)
+    if (given_ || framesDrawn < 1)
         return;
     double frameSeconds = targetFrameSeconds_;
     if (secondsLeft)

@@ -13,8 +13,11 @@ int samplesPerFrameFor(double targetFrameSeconds, double secondsPerSample, int m
 
 // The samples per pixel the frames of a render loop add, the one policy of the batch render
 // and the window: the user's --samples-per-frame when given; otherwise the setting's value
-// until the renderer has drawn two frames, then samplesPerFrameFor the loop's frame time and
-// the cost the last frame measured (the first frame includes code generation: no measure).
+// for the first frame, then samplesPerFrameFor the loop's frame time and the cost the last
+// frame measured. The first frame's cost includes code generation, which can only make the
+// second frame shorter than aimed, never longer; a second frame at the setting's value
+// instead (one path per pixel) runs at a third of the speed of a full one (scene 3 of the
+// original on llvmpipe: SIMD lanes wait for the slowest pixel of their group).
 //
 // A render aimed at an error stops at the first frame that ends with the target reached, so
 // a frame longer than the time left wastes the difference (and under adaptive sampling,

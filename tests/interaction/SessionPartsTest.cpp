@@ -129,15 +129,16 @@ TEST(FramePacing, SamplesPerFrameAimAtTheTargetTimeWithinOneToSixteen)
     EXPECT_EQ(interaction::samplesPerFrameFor(0.15, 0.0), 16);
 }
 
-// The first frame includes code generation, so the pacing keeps the setting's value until a
-// second frame has measured a sample's cost.
-TEST(FramePacing, SamplesPerFrameFollowTheCostFromTheSecondFrameOn)
+// The setting's value for the first frame, then the cost of the last frame decides, the first
+// one's included: its code generation can only shorten the second frame.
+TEST(FramePacing, SamplesPerFrameFollowTheCostOfTheLastFrameFromTheFirstOn)
 {
     interaction::SamplesPerFrame pacing(1, false, 0.15);
-    pacing.afterFrame(1, 0.03);
     EXPECT_EQ(pacing.samples(), 1);
-    pacing.afterFrame(2, 0.03);
+    pacing.afterFrame(1, 0.03);
     EXPECT_EQ(pacing.samples(), 5);
+    pacing.afterFrame(2, 0.15);
+    EXPECT_EQ(pacing.samples(), 1);
     pacing.afterFrame(3, 1e-5);
     EXPECT_EQ(pacing.samples(), 16);
 }
