@@ -21,6 +21,7 @@ for scene in "$@"; do
   name="$(basename "$scene" .in)"
   (cd "$(dirname "$scene")" && "$root/build/bench/bench_throughput" --size 200 150 --seconds 0.2 \
     --profile-spp 16 --dump "$work/steps" "$(basename "$scene")" >/dev/null)
-  /usr/bin/python3 "$root/bench/step_maps.py" "$work/steps-$name-steps-per-path.pfm" \
+  # -s: Debian's numpy, the one its matplotlib was built for, not a pip-installed one in ~/.local
+  /usr/bin/python3 -s "$root/bench/step_maps.py" "$work/steps-$name-steps-per-path.pfm" \
     "$root/docs/performance/$name-steps.png" "$name"
 done

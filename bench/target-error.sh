@@ -43,5 +43,6 @@ for scene in "${scenes[@]}"; do
         render "$scene" "$name-$target-adaptive-s2" --target-error "$target" --seed 2
     done
 done
-/usr/bin/python3 "$root/bench/target_error.py" "$dir" --size $size --limit "${TARGET_LIMIT_TEXT:-$limit}" \
+# -s: Debian's numpy, the one its matplotlib was built for, not a pip-installed one in ~/.local
+/usr/bin/python3 -s "$root/bench/target_error.py" "$dir" --size $size --limit "${TARGET_LIMIT_TEXT:-$limit}" \
     --markdown "$root/docs/ACCURACY.md" --image-dir "$root/docs/accuracy"

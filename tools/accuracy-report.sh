@@ -106,6 +106,7 @@ command="tools/accuracy-report.sh"
 if [ "$scale" = quick ]; then
   command="ACCURACY_SCALE=quick tools/accuracy-report.sh"
 fi
-/usr/bin/python3 "$root/tools/accuracy_report.py" "$data" "$root/docs/ACCURACY.md" \
+# -s: Debian's numpy, the one its matplotlib was built for, not a pip-installed one in ~/.local
+/usr/bin/python3 -s "$root/tools/accuracy_report.py" "$data" "$root/docs/ACCURACY.md" \
   --configuration "$scale" --command "$command" --note "$note"
 echo "accuracy-report: wrote docs/ACCURACY.md and docs/accuracy/"

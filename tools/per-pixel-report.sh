@@ -166,7 +166,8 @@ if [ "${PER_PIXEL_ONLY:-}" != creases ] && { [ ! -f "$reference" ] || [ -n "${PE
 fi
 rm -f "$cache/probe.exr"
 
-/usr/bin/python3 "$root/tools/per_pixel_report.py" "$cache" "$root/docs/ACCURACY.md" \
+# -s: Debian's numpy, the one its matplotlib was built for, not a pip-installed one in ~/.local
+/usr/bin/python3 -s "$root/tools/per_pixel_report.py" "$cache" "$root/docs/ACCURACY.md" \
   "$root/docs/accuracy/per-pixel" --size "${size[@]}" --exact-spp "$exact_spp" \
   --settings-spp "$settings_spp" --crease-spp "$crease_spp" \
   --command "tools/per-pixel-report.sh" \
