@@ -124,9 +124,10 @@ constexpr int kMostAdaptiveSamplesPerFrame = 1024;
 // hardware, and a frame ends for a group of them when its slowest pixel has traced its
 // paths: the more paths a frame gives each pixel, the less of that wait there is per path
 // (scene 6 of the original at 400x300, 24 spp: 0.87 Mpaths/s with 0.5 s frames, of about 4
-// paths, 0.97 with frames of 8 paths or more). Longer frames cost a render nothing else:
-// an interrupt is still honoured between bands (ProgressiveRenderer::drawFrame), and
-// frames aim to end by a time limit (interaction::SamplesPerFrame).
+// paths, 0.97 with frames of 8 paths or more). What a longer frame costs: an interrupt,
+// still honoured between bands (ProgressiveRenderer::drawFrame), drops the frame it cuts,
+// now up to 2 s of work; frames aim to end by a time limit (interaction::SamplesPerFrame),
+// so the limit drops none.
 constexpr double kBatchFrameSeconds = 2.0;
 
 // What ended a render aimed at an error before it got there.
@@ -359,11 +360,12 @@ RenderRun runBatch(RenderSetup& setup, const CommandLine& line, const InterruptW
             errorTarget->mostSamplesAddedToAPixel() > 0.0f)
             secondsPerSample *=
                 std::max(1.0, 2.0 * samples / errorTarget->mostSamplesAddedToAPixel());
+        std::optional<double> secondsToLimit;
+        if (line.seconds)
+            secondsToLimit = *line.seconds - secondsSince(renderStart);
         pacing.afterFrame(renderer.frames(), secondsPerSample,
                           errorTarget ? errorTarget->predictedSecondsLeft() : std::nullopt,
-                          line.seconds ? std::optional<double>(*line.seconds -
-                                                               secondsSince(renderStart))
-                                       : std::nullopt);
+                          secondsToLimit);
     }
     // Exactly --spp samples in every pixel, also where a frame's loop budget left one
     // short (ProgressiveRenderer::renderFrame), or an interrupted render resumed did.

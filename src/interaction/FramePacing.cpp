@@ -25,12 +25,13 @@ void SamplesPerFrame::afterFrame(int framesDrawn, double lastSecondsPerSample,
     if (given_ || framesDrawn < 1)
         return;
     double frameSeconds = targetFrameSeconds_;
-    if (secondsLeft)
-        frameSeconds = std::min(frameSeconds, std::max(kShortestAimedFrameSeconds,
-                                                       kFrameShareOfTimeLeft * *secondsLeft));
-    if (secondsToLimit)
-        frameSeconds = std::min(frameSeconds, std::max(kShortestAimedFrameSeconds,
-                                                       kFrameShareOfTimeToLimit * *secondsToLimit));
+    auto atMostShareOf = [&frameSeconds](double share, std::optional<double> seconds) {
+        if (seconds)
+            frameSeconds =
+                std::min(frameSeconds, std::max(kShortestAimedFrameSeconds, share * *seconds));
+    };
+    atMostShareOf(kFrameShareOfTimeLeft, secondsLeft);
+    atMostShareOf(kFrameShareOfTimeToLimit, secondsToLimit);
     samples_ = samplesPerFrameFor(frameSeconds, lastSecondsPerSample, most_);
 }
 
